@@ -1,0 +1,1 @@
+//! SVG plots, report.md and a self-contained index.html.

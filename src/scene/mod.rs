@@ -1,0 +1,3 @@
+//! Scenes: the physical setup a run starts from.
+
+pub mod spec;
