@@ -1,1 +1,28 @@
-//! The exact event-driven engine.
+//! The exact event-driven engine for hard rods (1D), disks (2D) and spheres (3D).
+//!
+//! Read `simulation.rs` first: it is the event loop. Everything else is one
+//! idea per file: the collision rule, the box, the queue, the neighbour search,
+//! the observer hooks, and the checks a system passes before it runs.
+
+pub mod boundary;
+pub mod build;
+pub mod collide;
+pub mod neighbours;
+pub mod observer;
+pub mod particle;
+pub mod queue;
+pub mod simulation;
+pub mod thermal;
+pub mod vector;
+
+pub use boundary::{Axis, SimBox, Wall};
+pub use build::BuildError;
+pub use neighbours::{CellGrid, Chain, Neighbourhood};
+pub use observer::{Observer, PairCollision, Snapshot, WallHit};
+pub use particle::Particle;
+pub use simulation::{Counts, Simulation, Stop};
+
+/// The engine for each dimension: a chain of neighbours in 1D, a cell grid above.
+pub type Rods<O> = Simulation<1, Chain, O>;
+pub type Disks<O> = Simulation<2, CellGrid<2>, O>;
+pub type Spheres<O> = Simulation<3, CellGrid<3>, O>;

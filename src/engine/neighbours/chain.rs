@@ -1,0 +1,47 @@
+//! 1D: particles never pass each other, so each one can only hit the next on
+//! either side (and, on a periodic line, the two ends hit each other).
+
+use super::{Crossing, Image, Neighbourhood};
+use crate::engine::boundary::SimBox;
+use crate::engine::particle::Particle;
+
+#[derive(Debug, Clone)]
+pub struct Chain {
+    n: usize,
+    periodic: bool,
+}
+
+impl<const D: usize> Neighbourhood<D> for Chain {
+    fn build(particles: &[Particle<D>], sim_box: &SimBox<D>) -> Result<Self, String> {
+        if D != 1 {
+            return Err("the chain neighbourhood is for one dimension only".into());
+        }
+        Ok(Chain {
+            n: particles.len(),
+            periodic: sim_box.axes[0].is_periodic(),
+        })
+    }
+
+    #[inline(always)]
+    fn for_each_candidate(&self, i: usize, mut f: impl FnMut(usize, Image)) {
+        // Images in 1D: 0 = one box to the left, 1 = none, 2 = one box to the right.
+        if i > 0 {
+            f(i - 1, 1);
+        } else if self.periodic && self.n > 1 {
+            f(self.n - 1, 0);
+        }
+        if i + 1 < self.n {
+            f(i + 1, 1);
+        } else if self.periodic && self.n > 1 {
+            f(0, 2);
+        }
+    }
+
+    fn next_crossing(&self, _i: usize, _p: &Particle<D>) -> Option<(f64, Crossing)> {
+        None
+    }
+
+    fn cross(&mut self, _i: usize, _c: Crossing, _p: &mut Particle<D>) -> bool {
+        false
+    }
+}

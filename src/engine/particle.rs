@@ -1,0 +1,66 @@
+//! A hard particle. Its position is stored at its own last-event time `t`
+//! (lazy update): only the particles an event touches are moved.
+
+use super::vector::{Vector, add_scaled};
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Particle<const D: usize> {
+    /// Position at time `t`.
+    pub pos: Vector<D>,
+    pub vel: Vector<D>,
+    /// The time at which `pos` holds.
+    pub t: f64,
+    /// 1/m; 0 means immovable (infinitely massive, like the seeds' walls).
+    pub inv_mass: f64,
+    pub radius: f64,
+    pub species: u16,
+}
+
+impl<const D: usize> Particle<D> {
+    pub fn new(pos: Vector<D>, vel: Vector<D>, mass: f64, radius: f64) -> Self {
+        let inv_mass = if mass.is_infinite() { 0.0 } else { 1.0 / mass };
+        Particle {
+            pos,
+            vel,
+            t: 0.0,
+            inv_mass,
+            radius,
+            species: 0,
+        }
+    }
+
+    pub fn with_species(mut self, species: u16) -> Self {
+        self.species = species;
+        self
+    }
+
+    /// Where the particle is at time `t` (free flight since its last event).
+    #[inline(always)]
+    pub fn position_at(&self, t: f64) -> Vector<D> {
+        add_scaled(&self.pos, t - self.t, &self.vel)
+    }
+
+    /// Move the stored position forward to time `t`.
+    #[inline(always)]
+    pub fn advance_to(&mut self, t: f64) {
+        self.pos = self.position_at(t);
+        self.t = t;
+    }
+
+    pub fn mass(&self) -> f64 {
+        1.0 / self.inv_mass
+    }
+
+    pub fn is_immovable(&self) -> bool {
+        self.inv_mass == 0.0
+    }
+
+    /// Kinetic energy; an immovable particle at rest has none.
+    pub fn kinetic_energy(&self) -> f64 {
+        if self.is_immovable() {
+            0.0
+        } else {
+            0.5 * super::vector::norm2(&self.vel) / self.inv_mass
+        }
+    }
+}

@@ -1,0 +1,412 @@
+//! The event loop. Each particle has exactly one scheduled event: the earliest
+//! of its next collision, wall hit or cell crossing. Repeatedly: take the
+//! earliest event in the queue, move the particles it involves to that time,
+//! apply it, and predict new events for those particles. A collision predicted
+//! with a partner that has since had an event of its own is stale and is
+//! simply re-predicted (each particle carries an event stamp).
+
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+use super::boundary::{SimBox, Wall, wall_time};
+use super::build::{BuildError, check_overlaps, validate};
+use super::collide::{bounce, contact_time};
+use super::neighbours::{Crossing, Image, Neighbourhood, image_shift, no_shift};
+use super::observer::{Observer, PairCollision, Snapshot, WallHit};
+use super::particle::Particle;
+use super::thermal;
+use super::vector::{Vector, dot, norm2, sub};
+
+/// What a particle's scheduled event is.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Next {
+    Nothing,
+    Pair { j: u32, stamp: u32, image: Image },
+    Wall { axis: u8, high: bool },
+    Cross(Crossing),
+}
+
+/// Tallies of what the engine did.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Counts {
+    pub events: u64,
+    pub collisions: u64,
+    pub wall_hits: u64,
+    pub crossings: u64,
+    pub stale: u64,
+    pub samples: u64,
+}
+
+/// When to stop a run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Stop {
+    /// At this absolute simulation time.
+    Time(f64),
+    /// After this many more pair collisions.
+    Collisions(u64),
+}
+
+#[derive(Debug, Clone)]
+pub struct Simulation<const D: usize, N: Neighbourhood<D>, O: Observer<D>> {
+    particles: Vec<Particle<D>>,
+    sim_box: SimBox<D>,
+    neighbours: N,
+    queue: super::queue::EventQueue,
+    next: Vec<Next>,
+    stamp: Vec<u32>,
+    /// Displacement of each periodic image code.
+    shifts: Vec<Vector<D>>,
+    /// Engine time, measured from `origin` (reset now and then so that long
+    /// runs keep full precision in `now - t`).
+    now: f64,
+    origin: f64,
+    rebase_every: u64,
+    events_since_rebase: u64,
+    sample_every: Option<f64>,
+    samples_taken: u64,
+    sample_start: f64,
+    rng: ChaCha8Rng,
+    pub counts: Counts,
+    pub observer: O,
+}
+
+impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
+    /// Build a system at time 0; `seed` feeds the thermal walls' random stream.
+    pub fn new(
+        mut particles: Vec<Particle<D>>,
+        sim_box: SimBox<D>,
+        observer: O,
+        seed: u64,
+    ) -> Result<Self, BuildError> {
+        validate(&mut particles, &sim_box)?;
+        for p in &mut particles {
+            p.t = 0.0;
+        }
+        let neighbours = N::build(&particles, &sim_box).map_err(BuildError)?;
+        check_overlaps(&particles, &sim_box, &neighbours)?;
+        let n = particles.len();
+        let mut sim = Simulation {
+            shifts: (0..3u32.pow(D as u32))
+                .map(|c| image_shift(c as Image, &sim_box.size))
+                .collect(),
+            particles,
+            sim_box,
+            neighbours,
+            queue: super::queue::EventQueue::new(n),
+            next: vec![Next::Nothing; n],
+            stamp: vec![0; n],
+            now: 0.0,
+            origin: 0.0,
+            rebase_every: (16 * n as u64).max(4096),
+            events_since_rebase: 0,
+            sample_every: None,
+            samples_taken: 0,
+            sample_start: 0.0,
+            rng: ChaCha8Rng::seed_from_u64(seed),
+            counts: Counts::default(),
+            observer,
+        };
+        for i in 0..n {
+            sim.predict(i);
+        }
+        Ok(sim)
+    }
+
+    /// Sample the state every `every` time units from now on (first sample now).
+    pub fn sample_every(&mut self, every: Option<f64>) {
+        self.sample_every = every.filter(|dt| *dt > 0.0 && dt.is_finite());
+        self.sample_start = self.time();
+        self.samples_taken = 0;
+    }
+
+    /// Absolute simulation time.
+    pub fn time(&self) -> f64 {
+        self.origin + self.now
+    }
+
+    pub fn particles(&self) -> &[Particle<D>] {
+        &self.particles
+    }
+
+    pub fn sim_box(&self) -> &SimBox<D> {
+        &self.sim_box
+    }
+
+    pub fn snapshot(&self) -> Snapshot<'_, D> {
+        Snapshot {
+            time: self.time(),
+            now: self.now,
+            particles: &self.particles,
+            sim_box: &self.sim_box,
+        }
+    }
+
+    pub fn kinetic_energy(&self) -> f64 {
+        self.particles.iter().map(Particle::kinetic_energy).sum()
+    }
+
+    pub fn momentum(&self) -> Vector<D> {
+        let mut p = [0.0; D];
+        for q in self.particles.iter().filter(|q| !q.is_immovable()) {
+            for k in 0..D {
+                p[k] += q.vel[k] / q.inv_mass;
+            }
+        }
+        p
+    }
+
+    /// Run until `stop`, taking samples on the way.
+    pub fn run(&mut self, stop: Stop) {
+        let end_collisions = match stop {
+            Stop::Collisions(n) => self.counts.collisions.saturating_add(n),
+            Stop::Time(_) => u64::MAX,
+        };
+        let end_absolute = match stop {
+            Stop::Time(t) => t,
+            Stop::Collisions(_) => f64::INFINITY,
+        };
+        loop {
+            // Relative to the current origin, which a rebase moves.
+            let end_time = end_absolute - self.origin;
+            let (i, t) = self.queue.peek().unwrap_or((0, f64::INFINITY));
+            if let Some(ts) = self.next_sample_time()
+                && ts <= t
+                && ts <= end_time
+            {
+                self.take_sample(ts);
+                continue;
+            }
+            if t > end_time || self.counts.collisions >= end_collisions || t.is_infinite() {
+                break;
+            }
+            self.now = t;
+            self.handle(i);
+            self.events_since_rebase += 1;
+            if self.events_since_rebase >= self.rebase_every {
+                self.rebase();
+            }
+        }
+        if end_absolute.is_finite() {
+            self.now = end_absolute - self.origin;
+        }
+    }
+
+    fn next_sample_time(&self) -> Option<f64> {
+        self.sample_every
+            .map(|dt| self.sample_start + self.samples_taken as f64 * dt - self.origin)
+    }
+
+    fn take_sample(&mut self, t: f64) {
+        self.now = t;
+        self.samples_taken += 1;
+        self.counts.samples += 1;
+        let snapshot = Snapshot {
+            time: self.time(),
+            now: self.now,
+            particles: &self.particles,
+            sim_box: &self.sim_box,
+        };
+        self.observer.sample(&snapshot);
+    }
+
+    /// Apply particle i's scheduled event, which is due now.
+    fn handle(&mut self, i: usize) {
+        self.counts.events += 1;
+        match self.next[i] {
+            Next::Pair { j, stamp, image } => {
+                if self.stamp[j as usize] == stamp {
+                    self.collide(i, j as usize, image);
+                } else {
+                    self.counts.stale += 1;
+                    self.predict(i);
+                }
+            }
+            Next::Wall { axis, high } => self.hit_wall(i, axis as usize, high),
+            Next::Cross(crossing) => {
+                self.counts.crossings += 1;
+                if self.neighbours.cross(i, crossing, &mut self.particles[i]) {
+                    // The stored position jumped by a box length: partners'
+                    // predictions used the old image, so they must be redone.
+                    self.stamp[i] = self.stamp[i].wrapping_add(1);
+                }
+                self.predict(i);
+            }
+            Next::Nothing => self.queue.set(i, f64::INFINITY),
+        }
+    }
+
+    fn collide(&mut self, i: usize, j: usize, image: Image) {
+        let now = self.now;
+        self.particles[i].advance_to(now);
+        self.particles[j].advance_to(now);
+        let (p, q) = (&self.particles[i], &self.particles[j]);
+        let shift = &self.shifts[image as usize];
+        let r: Vector<D> = std::array::from_fn(|k| q.pos[k] + shift[k] - p.pos[k]);
+        let dist = norm2(&r).sqrt();
+        if dist > 0.0 {
+            let n: Vector<D> = std::array::from_fn(|k| r[k] / dist);
+            if let Some(b) = bounce(&p.vel, &q.vel, p.inv_mass, q.inv_mass, &n) {
+                for k in 0..D {
+                    self.particles[i].vel[k] += b.dv_i[k];
+                    self.particles[j].vel[k] += b.dv_j[k];
+                }
+                self.counts.collisions += 1;
+                let event = PairCollision {
+                    time: self.time(),
+                    i,
+                    j,
+                    impulse_i: b.impulse_i,
+                    separation: r,
+                };
+                self.observer.pair_collision(&event);
+            }
+        }
+        self.stamp[i] = self.stamp[i].wrapping_add(1);
+        self.stamp[j] = self.stamp[j].wrapping_add(1);
+        self.predict(i);
+        self.predict(j);
+    }
+
+    fn hit_wall(&mut self, i: usize, axis: usize, high: bool) {
+        let now = self.now;
+        let p = &mut self.particles[i];
+        p.advance_to(now);
+        let outward = if high { 1.0 } else { -1.0 };
+        if p.vel[axis] * outward > 0.0
+            && let Some(wall) = self.sim_box.axes[axis].wall(high)
+        {
+            let before = p.vel;
+            match wall {
+                Wall::Hard => p.vel[axis] = -p.vel[axis],
+                Wall::Thermal { temperature } => {
+                    p.vel =
+                        thermal::emit::<D>(&mut self.rng, temperature, p.inv_mass, axis, -outward);
+                }
+            }
+            let m = p.mass();
+            let impulse = std::array::from_fn(|k| m * (p.vel[k] - before[k]));
+            let energy_gain = 0.5 * m * (norm2(&p.vel) - norm2(&before));
+            self.counts.wall_hits += 1;
+            let event = WallHit {
+                time: self.time(),
+                i,
+                axis,
+                high,
+                impulse,
+                energy_gain,
+            };
+            self.observer.wall_hit(&event);
+        }
+        self.stamp[i] = self.stamp[i].wrapping_add(1);
+        self.predict(i);
+    }
+
+    /// Find particle i's earliest event and put it in the queue.
+    fn predict(&mut self, i: usize) {
+        let now = self.now;
+        let p = &self.particles[i];
+        let mut best_t = f64::INFINITY;
+        let mut best = Next::Nothing;
+        for k in 0..D {
+            if let Some((dt, high)) = wall_time(
+                p.pos[k],
+                p.vel[k],
+                p.radius,
+                self.sim_box.size[k],
+                &self.sim_box.axes[k],
+            ) {
+                let t = (p.t + dt).max(now);
+                if t < best_t {
+                    best_t = t;
+                    best = Next::Wall {
+                        axis: k as u8,
+                        high,
+                    };
+                }
+            }
+        }
+        if let Some((t, crossing)) = self.neighbours.next_crossing(i, p) {
+            let t = t.max(now);
+            if t < best_t {
+                best_t = t;
+                best = Next::Cross(crossing);
+            }
+        }
+        let x_i = p.position_at(now);
+        let (particles, shifts, stamp) = (&self.particles, &self.shifts, &self.stamp);
+        self.neighbours.for_each_candidate(i, |j, image| {
+            let q = &particles[j];
+            let shift = &shifts[image as usize];
+            let x_j = q.position_at(now);
+            let r: Vector<D> = std::array::from_fn(|k| x_j[k] + shift[k] - x_i[k]);
+            let v = sub(&q.vel, &p.vel);
+            if let Some(dt) = contact_time(&r, &v, p.radius + q.radius) {
+                let t = now + dt;
+                if t < best_t {
+                    best_t = t;
+                    best = Next::Pair {
+                        j: j as u32,
+                        stamp: stamp[j],
+                        image,
+                    };
+                }
+            }
+        });
+        self.next[i] = best;
+        self.queue.set(i, best_t);
+    }
+
+    /// Move the time origin to now: every particle is brought to the present
+    /// and all times shift, so `now - t` never loses digits to a large `now`.
+    fn rebase(&mut self) {
+        let now = self.now;
+        for p in &mut self.particles {
+            p.advance_to(now);
+            p.t = 0.0;
+        }
+        self.queue.rebase(now);
+        self.origin += now;
+        self.now = 0.0;
+        self.events_since_rebase = 0;
+    }
+
+    /// The deepest overlap among all pairs, as a fraction of their contact
+    /// distance (0 when none overlap). O(N) over neighbour cells; for tests.
+    pub fn max_overlap(&self) -> f64 {
+        let mut worst: f64 = 0.0;
+        for (i, p) in self.particles.iter().enumerate() {
+            let x_i = p.position_at(self.now);
+            self.neighbours.for_each_candidate(i, |j, image| {
+                let q = &self.particles[j];
+                let shift = &self.shifts[image as usize];
+                let x_j = q.position_at(self.now);
+                let r: Vector<D> = std::array::from_fn(|k| x_j[k] + shift[k] - x_i[k]);
+                let sigma = p.radius + q.radius;
+                if sigma > 0.0 {
+                    worst = worst.max(1.0 - dot(&r, &r).sqrt() / sigma);
+                }
+            });
+        }
+        worst
+    }
+
+    /// How far any particle sits outside a wall, in diameters (0 when none).
+    pub fn max_wall_violation(&self) -> f64 {
+        let mut worst: f64 = 0.0;
+        for p in &self.particles {
+            let x = p.position_at(self.now);
+            for k in 0..D {
+                if !self.sim_box.axes[k].is_periodic() {
+                    let out = (p.radius - x[k]).max(x[k] + p.radius - self.sim_box.size[k]);
+                    worst = worst.max(out / (2.0 * p.radius).max(1e-300));
+                }
+            }
+        }
+        worst
+    }
+
+    /// The no-shift image code, for callers building their own pair geometry.
+    pub fn identity_image() -> Image {
+        no_shift::<D>()
+    }
+}

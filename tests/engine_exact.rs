@@ -1,0 +1,174 @@
+//! Exact results: what hard-particle dynamics must give with no statistics at all.
+
+mod common;
+
+use bonkers::engine::{CellGrid, Snapshot};
+use bonkers::engine::{Observer, Particle, Rods, SimBox, Simulation, Stop, WallHit};
+
+/// Sums the impulse delivered to each wall.
+struct WallImpulse<const D: usize> {
+    on_high: [f64; D],
+    on_low: [f64; D],
+}
+
+impl<const D: usize> Default for WallImpulse<D> {
+    fn default() -> Self {
+        WallImpulse {
+            on_high: [0.0; D],
+            on_low: [0.0; D],
+        }
+    }
+}
+
+impl<const D: usize> Observer<D> for WallImpulse<D> {
+    fn wall_hit(&mut self, e: &WallHit<D>) {
+        let push = -e.impulse[e.axis];
+        if e.high {
+            self.on_high[e.axis] += push
+        } else {
+            self.on_low[e.axis] -= push
+        }
+    }
+}
+
+/// 1D, equal masses: a collision swaps velocities, so the set of velocities
+/// only ever gets permuted (and reflected at walls: the set of speeds stays),
+/// to round-off, over 200,000 collisions.
+#[test]
+fn equal_masses_in_1d_only_permute_speeds() {
+    let mut rng = common::rng(7);
+    let n = 50;
+    let particles: Vec<Particle<1>> = (0..n)
+        .map(|i| {
+            Particle::new(
+                [1.0 + 2.0 * i as f64],
+                [common::gaussian(&mut rng)],
+                1.0,
+                0.5,
+            )
+        })
+        .collect();
+    let mut speeds0: Vec<f64> = particles.iter().map(|p| p.vel[0].abs()).collect();
+    speeds0.sort_by(f64::total_cmp);
+    let mut sim = Rods::new(particles, SimBox::hard([2.0 * n as f64 + 1.0]), (), 1).unwrap();
+    sim.run(Stop::Collisions(200_000));
+    let mut speeds1: Vec<f64> = sim.particles().iter().map(|p| p.vel[0].abs()).collect();
+    speeds1.sort_by(f64::total_cmp);
+    // A swap written as v_i - (v_i - v_j) is exact only up to round-off.
+    for (a, b) in speeds0.iter().zip(&speeds1) {
+        assert!((a - b).abs() <= 1e-12 * speeds0[n - 1], "{a} vs {b}");
+    }
+}
+
+/// Tonks gas of equal-mass rods between walls: each rod's speed is carried
+/// from rod to rod like a point particle bouncing in the free length
+/// L - N sigma, so the time-averaged force on a wall is exactly 2 K / (L - N sigma).
+/// Over a finite time T each of the N "speed carriers" may be short of one
+/// hit, which bounds the error: |F T - 2K T / L_free| <= sum 2 m |v|.
+#[test]
+fn tonks_gas_wall_pressure_times_free_length_is_twice_the_kinetic_energy() {
+    let mut rng = common::rng(11);
+    let (n, length) = (20usize, 60.0);
+    let particles: Vec<Particle<1>> = (0..n)
+        .map(|i| {
+            Particle::new(
+                [1.5 + 2.9 * i as f64],
+                [common::gaussian(&mut rng)],
+                1.0,
+                0.5,
+            )
+        })
+        .collect();
+    let bound: f64 = particles.iter().map(|p| 2.0 * p.vel[0].abs()).sum();
+    let mut sim: Rods<WallImpulse<1>> =
+        Simulation::new(particles, SimBox::hard([length]), WallImpulse::default(), 1).unwrap();
+    let kinetic = sim.kinetic_energy();
+    let t_end = 20_000.0;
+    sim.run(Stop::Time(t_end));
+    let free = length - n as f64;
+    for push in [sim.observer.on_high[0], sim.observer.on_low[0]] {
+        let expected = 2.0 * kinetic / free * t_end;
+        assert!(
+            (push - expected).abs() <= bound,
+            "impulse {push}, expected {expected} +- {bound}"
+        );
+        let pressure_times_free = push / t_end * free;
+        assert!((pressure_times_free / (2.0 * kinetic) - 1.0).abs() < 1e-3);
+    }
+}
+
+/// Point particles (radius 0) never meet, so each keeps |v_k| on each axis and
+/// the force on a wall of axis k is exactly sum m v_k^2 / L_k: P V = sum m v_k^2.
+fn ideal_gas<const D: usize>(seed: u64) {
+    let mut rng = common::rng(seed);
+    let size = [10.0; D];
+    let particles: Vec<Particle<D>> = (0..200)
+        .map(|_| {
+            let pos = std::array::from_fn(|_| 10.0 * rand::RngExt::random::<f64>(&mut rng));
+            let vel = std::array::from_fn(|_| common::gaussian(&mut rng));
+            Particle::new(pos, vel, 1.0 + rand::RngExt::random::<f64>(&mut rng), 0.0)
+        })
+        .collect();
+    let sum_mv2: [f64; D] = std::array::from_fn(|k| {
+        particles
+            .iter()
+            .map(|p| p.vel[k] * p.vel[k] / p.inv_mass)
+            .sum()
+    });
+    let bound: [f64; D] = std::array::from_fn(|k| {
+        particles
+            .iter()
+            .map(|p| 2.0 * p.vel[k].abs() / p.inv_mass)
+            .sum()
+    });
+    let mut sim: Simulation<D, CellGrid<D>, WallImpulse<D>> =
+        Simulation::new(particles, SimBox::hard(size), WallImpulse::default(), 1).unwrap();
+    let t_end = 5_000.0;
+    sim.run(Stop::Time(t_end));
+    assert_eq!(sim.counts.collisions, 0);
+    for k in 0..D {
+        let area: f64 = (0..D).filter(|&a| a != k).map(|a| size[a]).product();
+        let expected = sum_mv2[k] / size[k] * t_end;
+        for push in [sim.observer.on_high[k], sim.observer.on_low[k]] {
+            assert!(
+                (push - expected).abs() <= bound[k],
+                "axis {k}: {push} vs {expected} +- {}",
+                bound[k]
+            );
+            let pv = push / t_end / area * size.iter().product::<f64>();
+            assert!((pv / sum_mv2[k] - 1.0).abs() < 0.01);
+        }
+    }
+}
+
+#[test]
+fn ideal_gas_wall_pressure_in_2d_and_3d() {
+    ideal_gas::<2>(21);
+    ideal_gas::<3>(31);
+}
+
+/// Samples do not perturb the dynamics: the same run with and without a
+/// clock ends in the bit-identical state.
+#[test]
+fn sampling_does_not_perturb_the_dynamics() {
+    struct Count(u64);
+    impl Observer<2> for Count {
+        fn sample(&mut self, _s: &Snapshot<2>) {
+            self.0 += 1;
+        }
+    }
+    let (ps, bx) = common::lattice::<2>(10, 1.3, 5);
+    let mut a: Simulation<2, CellGrid<2>, Count> =
+        Simulation::new(ps.clone(), bx, Count(0), 1).unwrap();
+    let mut b: Simulation<2, CellGrid<2>, ()> = Simulation::new(ps, bx, (), 1).unwrap();
+    a.sample_every(Some(0.0137));
+    a.run(Stop::Time(50.0));
+    b.run(Stop::Time(50.0));
+    assert_eq!(a.observer.0, 3650, "samples at 0, Tc, 2Tc, ... up to 50");
+    assert!(a.counts.collisions > 1000);
+    assert_eq!(a.counts.collisions, b.counts.collisions);
+    let state = |s: &[bonkers::engine::Particle<2>]| {
+        s.iter().map(|p| (p.pos, p.vel, p.t)).collect::<Vec<_>>()
+    };
+    assert_eq!(state(a.particles()), state(b.particles()));
+}
