@@ -115,12 +115,13 @@ pub fn render(spec: &ChartSpec) -> String {
     }
     let xr = axis_range(pts.iter().map(|p| p.0), spec.x_log);
     let yr = axis_range(pts.iter().map(|p| p.1), spec.y_log);
+    let legend = emptiest_corner(&pts, (&xr, spec.x_log), (&yr, spec.y_log));
     let drawn = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
         match (spec.x_log, spec.y_log) {
-            (false, false) => draw(spec, xr, yr),
-            (true, false) => draw(spec, xr.log_scale(), yr),
-            (false, true) => draw(spec, xr, yr.log_scale()),
-            (true, true) => draw(spec, xr.log_scale(), yr.log_scale()),
+            (false, false) => draw(spec, legend, xr, yr),
+            (true, false) => draw(spec, legend, xr.log_scale(), yr),
+            (false, true) => draw(spec, legend, xr, yr.log_scale()),
+            (true, true) => draw(spec, legend, xr.log_scale(), yr.log_scale()),
         }
     }));
     match drawn {
@@ -153,7 +154,45 @@ fn axis_range(values: impl Iterator<Item = f64>, log: bool) -> Range<f64> {
     }
 }
 
-fn draw<X, Y>(spec: &ChartSpec, x: X, y: Y) -> anyhow::Result<String>
+/// The corner holding the fewest data points, for the legend box.
+fn emptiest_corner(
+    pts: &[(f64, f64)],
+    x: (&Range<f64>, bool),
+    y: (&Range<f64>, bool),
+) -> SeriesLabelPosition {
+    let frac = |v: f64, (r, log): (&Range<f64>, bool)| {
+        let (v, lo, hi) = if log {
+            (v.ln(), r.start.ln(), r.end.ln())
+        } else {
+            (v, r.start, r.end)
+        };
+        (v - lo) / (hi - lo)
+    };
+    let mut counts = [0usize; 4];
+    for &(px, py) in pts {
+        let (fx, fy) = (frac(px, x), frac(py, y));
+        let right = fx > 0.55;
+        let left = fx < 0.45;
+        let top = fy > 0.6;
+        let bottom = fy < 0.4;
+        for (i, hit) in [top && right, top && left, bottom && right, bottom && left]
+            .into_iter()
+            .enumerate()
+        {
+            counts[i] += usize::from(hit);
+        }
+    }
+    let corners = [
+        SeriesLabelPosition::UpperRight,
+        SeriesLabelPosition::UpperLeft,
+        SeriesLabelPosition::LowerRight,
+        SeriesLabelPosition::LowerLeft,
+    ];
+    let best = (0..4).min_by_key(|&i| counts[i]).unwrap_or(0);
+    corners[best].clone()
+}
+
+fn draw<X, Y>(spec: &ChartSpec, legend: SeriesLabelPosition, x: X, y: Y) -> anyhow::Result<String>
 where
     X: AsRangedCoord<Value = f64>,
     Y: AsRangedCoord<Value = f64>,
@@ -177,7 +216,10 @@ where
             .y_desc(spec.y_label.as_str())
             .axis_desc_style(("sans-serif", 16))
             .label_style(("sans-serif", 13))
-            .light_line_style(RGBColor(236, 236, 236))
+            .x_labels(10)
+            .y_labels(8)
+            .max_light_lines(1)
+            .light_line_style(RGBColor(240, 240, 240))
             .bold_line_style(RGBColor(215, 215, 215))
             .x_label_formatter(&|v| num(*v))
             .y_label_formatter(&|v| num(*v))
@@ -190,7 +232,7 @@ where
         if labelled {
             chart
                 .configure_series_labels()
-                .position(SeriesLabelPosition::UpperRight)
+                .position(legend)
                 .background_style(WHITE.mix(0.85))
                 .border_style(RGBColor(180, 180, 180))
                 .label_font(("sans-serif", 13))
@@ -205,8 +247,8 @@ where
 type Chart<'a, 'b, X, Y> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<X, Y>>;
 
 /// Draw one layer; true if it added a legend entry.
-fn draw_layer<X, Y>(
-    chart: &mut Chart<'_, '_, X, Y>,
+fn draw_layer<'a, 'b: 'a, X, Y>(
+    chart: &mut Chart<'a, 'b, X, Y>,
     spec: &ChartSpec,
     layer: &Layer,
 ) -> anyhow::Result<bool>
@@ -232,8 +274,13 @@ where
                 }
                 .map_err(plot_err)?;
                 if let (0, Some(label)) = (i, label) {
-                    anno.label(label)
-                        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], style));
+                    // A dashed legend swatch for dashed lines: two strokes with a gap.
+                    let gap = if *dashed { 5 } else { 0 };
+                    anno.label(label).legend(move |(x, y)| {
+                        EmptyElement::at((x, y))
+                            + PathElement::new(vec![(0, 0), (9, 0)], style)
+                            + PathElement::new(vec![(9 + gap, 0), (22, 0)], style)
+                    });
                 }
             }
             Ok(label.is_some() && points.iter().any(keep))

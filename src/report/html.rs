@@ -204,20 +204,20 @@ fn split_row(row: &str) -> Vec<String> {
     } else {
         t
     };
-    let mut cells = vec![String::new()];
+    let mut cells = Vec::new();
+    let mut current = String::new();
     let mut chars = t.chars().peekable();
     while let Some(c) = chars.next() {
         match c {
             '\\' if chars.peek() == Some(&'|') => {
                 chars.next();
-                cells.last_mut().map(|s| s.push_str("\\|"));
+                current.push_str("\\|");
             }
-            '|' => cells.push(String::new()),
-            c => {
-                cells.last_mut().map(|s| s.push(c));
-            }
+            '|' => cells.push(std::mem::take(&mut current)),
+            c => current.push(c),
         }
     }
+    cells.push(current);
     cells.into_iter().map(|c| c.trim().to_string()).collect()
 }
 

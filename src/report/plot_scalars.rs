@@ -8,6 +8,11 @@ use super::plots::{Points, colour, point_label, wants_log};
 use crate::analysis::summary_types::SummaryRow;
 use std::collections::{BTreeMap, BTreeSet};
 
+const THEORY: Paint = Paint {
+    rgb: (30, 30, 30),
+    alpha: 1.0,
+};
+
 /// (result name, chart) for every result in the summary, sorted by name.
 pub fn charts(summary: &[SummaryRow], points: &Points) -> Vec<(String, ChartSpec)> {
     let results: BTreeSet<&str> = summary.iter().map(|r| r.result.as_str()).collect();
@@ -71,6 +76,8 @@ fn chart(name: &str, rows: &[&SummaryRow], x_key: Option<&str>, points: &Points)
     }
     let single = groups.len() == 1;
     let mut layers = Vec::new();
+    // Theory goes last: drawn over the measurements, listed last in the legend.
+    let mut theories = Vec::new();
     let mut theory_labelled = false;
     for (i, (label, mut group)) in groups.into_iter().enumerate() {
         group.sort_by(|a, b| x_of(a).total_cmp(&x_of(b)));
@@ -105,15 +112,12 @@ fn chart(name: &str, rows: &[&SummaryRow], x_key: Option<&str>, points: &Points)
             .filter_map(|r| r.theory.map(|t| (x_of(r), t)))
             .collect();
         if !theory.is_empty() {
-            let paint = if single {
-                Paint::solid((0, 0, 0))
-            } else {
-                paint
-            };
-            layers.push(theory_layer(theory, paint, !theory_labelled));
+            // One dark theory style for every line, so the legend needs one entry.
+            theories.push(theory_layer(theory, THEORY, !theory_labelled));
             theory_labelled = true;
         }
     }
+    layers.extend(theories);
     let xs = rows.iter().map(|r| x_of(r));
     let ys = rows.iter().flat_map(|r| {
         [
