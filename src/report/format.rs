@@ -34,7 +34,10 @@ fn trim(s: String) -> String {
 /// "mean ± stderr" with the error to 2 significant digits and the mean to the
 /// same decimal place; just the mean when there is no error bar.
 pub fn pm(mean: f64, stderr: f64) -> String {
-    if !mean.is_finite() || !stderr.is_finite() || stderr <= 0.0 {
+    if mean.is_finite() && stderr == 0.0 {
+        return format!("{} ± 0", num(mean));
+    }
+    if !mean.is_finite() || !stderr.is_finite() || stderr < 0.0 {
         return num(mean);
     }
     let exp = stderr.log10().floor() as i32;
@@ -75,5 +78,7 @@ mod tests {
         assert_eq!(pm(123.456, 12.0), "123 ± 12");
         assert_eq!(count(1234567), "1\u{202f}234\u{202f}567");
         assert_eq!(count(12), "12");
+        assert_eq!(pm(3.0, 0.0), "3 ± 0");
+        assert_eq!(pm(3.0, f64::NAN), "3");
     }
 }

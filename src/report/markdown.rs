@@ -45,7 +45,7 @@ pub fn render(inp: &Inputs) -> String {
         }
     }
     failures(&mut md, inp.meta);
-    footer(&mut md);
+    footer(&mut md, inp.runs);
     md
 }
 
@@ -110,8 +110,9 @@ fn what_was_run(md: &mut String, inp: &Inputs) {
     let (lo, hi) = seeds.fold((u64::MAX, 0), |(lo, hi), s| (lo.min(s), hi.max(s)));
     let _ = writeln!(
         md,
-        "{} points × {} replicas = {} runs (each: {}). Study seed {}; each run's own seed \
-         derives from (study seed, point, replica){} and is the `seed` column of `runs.parquet`.\n",
+        "{} points × {} replicas = {} runs (each: {}). Study seed {}; every run has its \
+         own seed{}, derived from (study seed, point, replica): the `seed` column of \
+         `runs.parquet`.\n",
         inp.points.len(),
         d.study.replicas,
         inp.runs.len(),
@@ -124,7 +125,7 @@ fn what_was_run(md: &mut String, inp: &Inputs) {
         if inp.runs.is_empty() {
             String::new()
         } else {
-            format!(", from {lo} to {hi}")
+            format!(" ({lo} to {hi})")
         },
     );
 }
@@ -173,8 +174,8 @@ fn theory_table(md: &mut String, inp: &Inputs) {
             "—".into()
         };
         let z = match (r.z, r.theory) {
-            (Some(z), _) if z.abs() > Z_FLAG => format!("**{}** ⚠", num(z)),
-            (Some(z), _) => num(z),
+            (Some(z), _) if z.abs() > Z_FLAG => format!("**{z:.2}** ⚠"),
+            (Some(z), _) => format!("{z:.2}"),
             (None, Some(_)) if r.n >= 2 && r.stderr == 0.0 => "— (no spread)".into(),
             _ => "—".into(),
         };
@@ -252,16 +253,27 @@ fn failures(md: &mut String, meta: &ReportMeta) {
     md.push('\n');
 }
 
-fn footer(md: &mut String) {
+/// The tables beside the report; series and histograms only when some run
+/// produced them (the store writes them only then).
+fn footer(md: &mut String, runs: &[(RunSpec, RunOutput)]) {
     md.push_str(
         "## How to read the tables\n\n\
          The tables are tidy Parquet files beside this report (polars, pandas, DuckDB, R):\n\n\
          - `runs.parquet`: one row per simulation: `run_id`, `point_id`, `replica`, `seed`, \
-         the swept parameters as columns, one column per scalar result, the cost \
-         (`events`, `collisions`, `wall_seconds`) and `status`.\n\
-         - `series.parquet`: long form `run_id`, `observable`, `t`, `value`.\n\
-         - `histograms.parquet`: long form `run_id`, `observable`, `lo`, `hi`, `count` (bins are [lo, hi)).\n\
-         - `summary.parquet`: per point and result: `point_id`, the parameters, `result`, `n`, \
+         the swept parameters as columns, one column per scalar result (prefixed `result.` \
+         if its name is taken), the cost (`events`, `collisions`, `wall_seconds`) and `status`.\n",
+    );
+    if runs.iter().any(|(_, o)| !o.series.is_empty()) {
+        md.push_str("- `series.parquet`: long form `run_id`, `t`, `observable`, `value`.\n");
+    }
+    if runs.iter().any(|(_, o)| !o.histograms.is_empty()) {
+        md.push_str(
+            "- `histograms.parquet`: long form `run_id`, `observable`, `lo`, `hi`, `count` \
+             (bins are [lo, hi)).\n",
+        );
+    }
+    md.push_str(
+        "- `summary.parquet`: per point and result: `point_id`, the parameters, `result`, `n`, \
          `mean`, `std`, `stderr`, `ci_low`, `ci_high`, `theory`, `z`, `seconds`, `collisions`.\n\n\
          Units are reduced: lengths in σ, masses in m, energies in kT, time in σ√(m/kT).\n",
     );
@@ -280,10 +292,13 @@ fn params_text(points: &Points, id: u64) -> String {
 }
 
 fn rate(collisions: u64, seconds: f64) -> String {
-    if seconds > 0.0 {
-        num(collisions as f64 / seconds)
-    } else {
+    let r = collisions as f64 / seconds;
+    if !(seconds > 0.0 && r.is_finite()) {
         "—".into()
+    } else if r >= 1000.0 {
+        count(r.round() as u64)
+    } else {
+        num(r)
     }
 }
 
