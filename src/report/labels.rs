@@ -72,3 +72,18 @@ pub fn slug(name: &str) -> String {
         .collect();
     if s.is_empty() { "unnamed".into() } else { s }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn labels_units_and_fallbacks() {
+        assert_eq!(axis_label("t"), "time t [σ√(m/kT)]");
+        assert_eq!(axis_label("scene.piston.mass"), "piston mass M [m]");
+        assert_eq!(axis_label("scene.species.1.mass"), "species 1 mass [m]");
+        assert_eq!(axis_label("my_observable"), "my_observable");
+        assert_eq!(short_name("scene.piston.mass"), "mass");
+        assert_eq!(slug("g(r) A"), "g_r__a");
+    }
+}
