@@ -1,5 +1,6 @@
 //! Analyses that turn finished runs into per-point statistics and report sections.
 
+pub mod summary;
 pub mod summary_types;
 
 use crate::study::descriptor_types::Descriptor;

@@ -1,1 +1,67 @@
 //! SVG plots, report.md and a self-contained index.html.
+//!
+//! The report is written from one markdown text (`markdown.rs`); `html.rs`
+//! renders that same text with the SVGs inlined, so the two never disagree.
+
+mod atomic;
+pub mod chart;
+pub mod format;
+pub mod html;
+pub mod labels;
+pub mod markdown;
+mod plot_hist;
+mod plot_scalars;
+mod plot_series;
+pub mod plots;
+
+pub use labels::axis_label;
+
+use crate::analysis::ReportSection;
+use crate::analysis::summary_types::SummaryRow;
+use crate::study::descriptor_types::Descriptor;
+use crate::study::output::RunOutput;
+use crate::study::plan_types::RunSpec;
+use anyhow::Context;
+use std::path::Path;
+
+/// How the study was run, for the report's header, cost and failure sections.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct ReportMeta {
+    pub command: String,
+    pub threads: usize,
+    pub started: String,
+    pub finished: String,
+    pub version: String,
+    pub total_wall_seconds: f64,
+    /// (run id, error message) of runs that did not finish.
+    pub failed_runs: Vec<(u64, String)>,
+}
+
+/// Write the generic plots, `report.md` and `index.html` into `out_dir`
+/// (created if missing). `sections` come after the generic parts, in order;
+/// their figures must already be in `out_dir`.
+pub fn write(
+    out_dir: &Path,
+    descriptor: &Descriptor,
+    runs: &[(RunSpec, RunOutput)],
+    summary: &[SummaryRow],
+    sections: &[ReportSection],
+    meta: &ReportMeta,
+) -> anyhow::Result<()> {
+    std::fs::create_dir_all(out_dir)
+        .with_context(|| format!("creating report folder {}", out_dir.display()))?;
+    let figures = plots::write_all(out_dir, runs, summary)?;
+    let points = plots::points(runs);
+    let md = markdown::render(&markdown::Inputs {
+        descriptor,
+        runs,
+        summary,
+        sections,
+        meta,
+        figures: &figures,
+        points: &points,
+    });
+    atomic::write(&out_dir.join("report.md"), md.as_bytes())?;
+    let page = html::page(&descriptor.study.name, &md, out_dir);
+    atomic::write(&out_dir.join("index.html"), page.as_bytes())
+}

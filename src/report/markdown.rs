@@ -1,0 +1,317 @@
+//! report.md: what was run, the plots, measurement beside theory, the cost,
+//! the study's own sections, failures, and how to read the tables.
+//! `html.rs` renders this same text, so the two never disagree.
+
+use super::ReportMeta;
+use super::format::{count, num, pm};
+use super::plots::{Figure, Points, point_label, value_text};
+use crate::analysis::ReportSection;
+use crate::analysis::summary_types::SummaryRow;
+use crate::study::descriptor_types::{Descriptor, SweepValues};
+use crate::study::output::RunOutput;
+use crate::study::plan_types::RunSpec;
+use std::collections::BTreeMap;
+use std::fmt::Write;
+
+/// |z| above this is flagged: more than three standard errors from theory.
+pub const Z_FLAG: f64 = 3.0;
+
+pub struct Inputs<'a> {
+    pub descriptor: &'a Descriptor,
+    pub runs: &'a [(RunSpec, RunOutput)],
+    pub summary: &'a [SummaryRow],
+    pub sections: &'a [ReportSection],
+    pub meta: &'a ReportMeta,
+    pub figures: &'a [Figure],
+    pub points: &'a Points,
+}
+
+pub fn render(inp: &Inputs) -> String {
+    let mut md = String::new();
+    header(&mut md, inp);
+    what_was_run(&mut md, inp);
+    plots(&mut md, inp.figures);
+    theory_table(&mut md, inp);
+    cost(&mut md, inp);
+    for s in inp.sections {
+        let _ = writeln!(
+            md,
+            "## {}\n\n{}\n",
+            one_line(&s.title),
+            s.markdown.trim_end()
+        );
+        for (file, caption) in &s.figures {
+            let _ = writeln!(md, "![{}]({})\n", one_line(caption), file);
+        }
+    }
+    failures(&mut md, inp.meta);
+    footer(&mut md, inp.runs);
+    md
+}
+
+fn header(md: &mut String, inp: &Inputs) {
+    let study = &inp.descriptor.study;
+    let _ = writeln!(md, "# {}\n", one_line(&study.name));
+    if !study.description.trim().is_empty() {
+        let _ = writeln!(md, "{}\n", study.description.trim());
+    }
+    let m = inp.meta;
+    let _ = writeln!(
+        md,
+        "Made by `{}` (bonkers {}) on {} threads, from {} to {}; wall time {} s.\n",
+        m.command.replace('`', "'"),
+        m.version,
+        m.threads,
+        m.started,
+        m.finished,
+        num(m.total_wall_seconds)
+    );
+}
+
+fn what_was_run(md: &mut String, inp: &Inputs) {
+    let d = inp.descriptor;
+    md.push_str("## What was run\n\n");
+    if let Some(sweep) = &d.sweep {
+        let mode = format!("{:?}", sweep.mode).to_lowercase();
+        let _ = writeln!(md, "Sweep ({mode}):\n\n| parameter | values |\n|---|---|");
+        for (key, values) in &sweep.parameters {
+            let text = match values {
+                SweepValues::List(v) => v.iter().map(value_text).collect::<Vec<_>>().join(", "),
+                SweepValues::Range(r) => format!(
+                    "{} to {} in {} {:?} steps",
+                    num(r.from),
+                    num(r.to),
+                    r.steps,
+                    r.scale
+                )
+                .to_lowercase(),
+            };
+            let _ = writeln!(md, "| `{key}` | {} |", cell(&text));
+        }
+        md.push('\n');
+    } else {
+        md.push_str("No sweep: one point.\n\n");
+    }
+    let run = &d.run;
+    let mut length = Vec::new();
+    if let Some(t) = run.duration {
+        length.push(format!("duration {}", num(t)));
+    }
+    if let Some(c) = run.collisions {
+        length.push(format!("{} collisions", count(c)));
+    }
+    if run.equilibrate > 0.0 {
+        length.push(format!("after equilibrating for {}", num(run.equilibrate)));
+    }
+    if let Some(s) = run.sample_every {
+        length.push(format!("sampled every {}", num(s)));
+    }
+    let seeds = inp.runs.iter().map(|(s, _)| s.seed);
+    let (lo, hi) = seeds.fold((u64::MAX, 0), |(lo, hi), s| (lo.min(s), hi.max(s)));
+    let _ = writeln!(
+        md,
+        "{} points × {} replicas = {} runs (each: {}). Study seed {}; every run has its \
+         own seed{}, derived from (study seed, point, replica): the `seed` column of \
+         `runs.parquet`.\n",
+        inp.points.len(),
+        d.study.replicas,
+        inp.runs.len(),
+        if length.is_empty() {
+            "as the scene says".into()
+        } else {
+            length.join(", ")
+        },
+        d.study.seed,
+        if inp.runs.is_empty() {
+            String::new()
+        } else {
+            format!(" ({lo} to {hi})")
+        },
+    );
+}
+
+fn plots(md: &mut String, figures: &[Figure]) {
+    if figures.is_empty() {
+        return;
+    }
+    md.push_str("## Plots\n\n");
+    for f in figures {
+        let _ = writeln!(md, "![{}]({})\n", one_line(&f.caption), f.file);
+    }
+}
+
+fn theory_table(md: &mut String, inp: &Inputs) {
+    md.push_str("## Measurements and theory\n\n");
+    if inp.summary.is_empty() {
+        md.push_str("No scalar results were measured.\n\n");
+        return;
+    }
+    let runs_per_point = runs_per_point(inp.runs);
+    let flagged = inp
+        .summary
+        .iter()
+        .filter(|r| r.z.is_some_and(|z| z.abs() > Z_FLAG))
+        .count();
+    let _ = writeln!(
+        md,
+        "Mean ± standard error over replicas; the 95% interval uses Student's t. \
+         z = (mean − theory) / stderr; rows with |z| > {Z_FLAG} are marked ⚠ ({flagged} of {}). \
+         n counts runs that measured the result (NaN results are left out).\n",
+        inp.summary.len()
+    );
+    md.push_str("| point | parameters | result | n | mean ± stderr | 95% CI | theory | z |\n");
+    md.push_str("|---:|---|---|---:|---:|---:|---:|---:|\n");
+    for r in inp.summary {
+        let total = runs_per_point.get(&r.point_id).copied().unwrap_or(0);
+        let n = if r.n as usize == total {
+            r.n.to_string()
+        } else {
+            format!("{} of {total}", r.n)
+        };
+        let ci = if r.ci_low.is_finite() {
+            format!("[{}, {}]", num(r.ci_low), num(r.ci_high))
+        } else {
+            "—".into()
+        };
+        let z = match (r.z, r.theory) {
+            (Some(z), _) if z.abs() > Z_FLAG => format!("**{z:.2}** ⚠"),
+            (Some(z), _) => format!("{z:.2}"),
+            (None, Some(_)) if r.n >= 2 && r.stderr == 0.0 => "— (no spread)".into(),
+            _ => "—".into(),
+        };
+        let _ = writeln!(
+            md,
+            "| {} | {} | `{}` | {} | {} | {} | {} | {} |",
+            r.point_id,
+            cell(&params_text(inp.points, r.point_id)),
+            r.result,
+            n,
+            pm(r.mean, r.stderr),
+            ci,
+            r.theory.map_or("—".into(), num),
+            z
+        );
+    }
+    md.push('\n');
+}
+
+fn cost(md: &mut String, inp: &Inputs) {
+    md.push_str("## Cost\n\n");
+    let mut per: BTreeMap<u64, (usize, f64, u64)> = BTreeMap::new();
+    for (s, o) in inp.runs {
+        let e = per.entry(s.point_id).or_default();
+        e.0 += 1;
+        e.1 += finite_or_zero(o.wall_seconds);
+        e.2 += o.collisions;
+    }
+    md.push_str("| point | parameters | runs | CPU s | collisions | collisions / s |\n");
+    md.push_str("|---:|---|---:|---:|---:|---:|\n");
+    let (mut runs, mut secs, mut colls) = (0, 0.0, 0);
+    for (id, (n, s, c)) in &per {
+        let _ = writeln!(
+            md,
+            "| {id} | {} | {n} | {} | {} | {} |",
+            cell(&params_text(inp.points, *id)),
+            num(*s),
+            count(*c),
+            rate(*c, *s)
+        );
+        (runs, secs, colls) = (runs + n, secs + s, colls + c);
+    }
+    let _ = writeln!(
+        md,
+        "| **total** | | **{runs}** | **{}** | **{}** | **{}** |\n",
+        num(secs),
+        count(colls),
+        rate(colls, secs)
+    );
+    let wall = inp.meta.total_wall_seconds;
+    if wall > 0.0 && secs > 0.0 {
+        let _ = writeln!(
+            md,
+            "{} CPU seconds in {} s of wall time on {} threads (parallel speed-up {}).\n",
+            num(secs),
+            num(wall),
+            inp.meta.threads,
+            num(secs / wall)
+        );
+    }
+}
+
+fn failures(md: &mut String, meta: &ReportMeta) {
+    if meta.failed_runs.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        md,
+        "## Failed runs\n\n{} runs failed; they are absent from the statistics above.\n",
+        meta.failed_runs.len()
+    );
+    for (id, msg) in &meta.failed_runs {
+        let _ = writeln!(md, "- run {id}: {}", one_line(msg));
+    }
+    md.push('\n');
+}
+
+/// The tables beside the report; series and histograms only when some run
+/// produced them (the store writes them only then).
+fn footer(md: &mut String, runs: &[(RunSpec, RunOutput)]) {
+    md.push_str(
+        "## How to read the tables\n\n\
+         The tables are tidy Parquet files beside this report (polars, pandas, DuckDB, R):\n\n\
+         - `runs.parquet`: one row per simulation: `run_id`, `point_id`, `replica`, `seed`, \
+         the swept parameters as columns, one column per scalar result (prefixed `result.` \
+         if its name is taken), the cost (`events`, `collisions`, `wall_seconds`) and `status`.\n",
+    );
+    if runs.iter().any(|(_, o)| !o.series.is_empty()) {
+        md.push_str("- `series.parquet`: long form `run_id`, `t`, `observable`, `value`.\n");
+    }
+    if runs.iter().any(|(_, o)| !o.histograms.is_empty()) {
+        md.push_str(
+            "- `histograms.parquet`: long form `run_id`, `observable`, `lo`, `hi`, `count` \
+             (bins are [lo, hi)).\n",
+        );
+    }
+    md.push_str(
+        "- `summary.parquet`: per point and result: `point_id`, the parameters, `result`, `n`, \
+         `mean`, `std`, `stderr`, `ci_low`, `ci_high`, `theory`, `z`, `seconds`, `collisions`.\n\n\
+         Units are reduced: lengths in σ, masses in m, energies in kT, time in σ√(m/kT).\n",
+    );
+}
+
+fn runs_per_point(runs: &[(RunSpec, RunOutput)]) -> BTreeMap<u64, usize> {
+    let mut m = BTreeMap::new();
+    for (s, _) in runs {
+        *m.entry(s.point_id).or_insert(0) += 1;
+    }
+    m
+}
+
+fn params_text(points: &Points, id: u64) -> String {
+    points.get(&id).map_or(String::new(), |p| point_label(p))
+}
+
+fn rate(collisions: u64, seconds: f64) -> String {
+    let r = collisions as f64 / seconds;
+    if !(seconds > 0.0 && r.is_finite()) {
+        "—".into()
+    } else if r >= 1000.0 {
+        count(r.round() as u64)
+    } else {
+        num(r)
+    }
+}
+
+fn finite_or_zero(x: f64) -> f64 {
+    if x.is_finite() { x } else { 0.0 }
+}
+
+/// Text safe inside a table cell: one line, pipes escaped.
+pub fn cell(s: &str) -> String {
+    one_line(s).replace('|', "\\|")
+}
+
+/// Newlines folded to spaces (headings, captions and list items are one line).
+pub fn one_line(s: &str) -> String {
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}

@@ -1,0 +1,80 @@
+//! Each histogram: the mean count per bin over replicas, as a step outline per
+//! sweep point (outlines stay readable when several points overlap).
+
+use super::chart::{ChartSpec, Layer};
+use super::labels::axis_label;
+use super::plots::{Points, colour, evenly, point_label};
+use crate::study::output::{Histogram, RunOutput};
+use crate::study::plan_types::RunSpec;
+use std::collections::BTreeSet;
+
+const MAX_POINTS: usize = 6;
+
+/// (observable, chart) for every histogrammed observable, sorted by name.
+pub fn charts(runs: &[(RunSpec, RunOutput)], points: &Points) -> Vec<(String, ChartSpec)> {
+    let names: BTreeSet<&str> = runs
+        .iter()
+        .flat_map(|(_, o)| o.histograms.iter().map(|h| h.observable.as_str()))
+        .collect();
+    let ids: Vec<u64> = points.keys().copied().collect();
+    let shown = evenly(&ids, MAX_POINTS);
+    names
+        .into_iter()
+        .map(|name| (name.to_string(), chart(name, runs, &shown, points)))
+        .collect()
+}
+
+fn chart(name: &str, runs: &[(RunSpec, RunOutput)], shown: &[u64], points: &Points) -> ChartSpec {
+    let mut layers = Vec::new();
+    for (i, id) in shown.iter().enumerate() {
+        let hists: Vec<&Histogram> = runs
+            .iter()
+            .filter(|(s, _)| s.point_id == *id)
+            .filter_map(|(_, o)| o.histograms.iter().find(|h| h.observable == name))
+            .collect();
+        let Some((mean, n)) = mean_counts(&hists) else {
+            continue;
+        };
+        let bins = hists[0];
+        let mut outline = Vec::with_capacity(2 * mean.len());
+        for ((lo, hi), c) in bins.lo.iter().zip(&bins.hi).zip(&mean) {
+            outline.push((*lo, *c));
+            outline.push((*hi, *c));
+        }
+        let params = points.get(id).map(Vec::as_slice).unwrap_or(&[]);
+        layers.push(Layer::Line {
+            points: outline,
+            paint: colour(i),
+            width: 2,
+            dashed: false,
+            label: Some(format!("{} (mean of {n})", point_label(params))),
+        });
+    }
+    ChartSpec {
+        title: format!("histogram of {name}"),
+        x_label: axis_label(name),
+        y_label: "mean count per bin".into(),
+        x_log: false,
+        y_log: false,
+        layers,
+    }
+}
+
+/// Mean count per bin over the histograms that share the first one's bins
+/// (others are left out rather than misaligned), and how many were averaged.
+pub fn mean_counts(hists: &[&Histogram]) -> Option<(Vec<f64>, usize)> {
+    let first = hists.first()?;
+    let bins = first.lo.len().min(first.hi.len()).min(first.count.len());
+    if bins == 0 {
+        return None;
+    }
+    let same: Vec<&&Histogram> = hists
+        .iter()
+        .filter(|h| h.lo.len() >= bins && h.count.len() >= bins && h.lo[..bins] == first.lo[..bins])
+        .collect();
+    let n = same.len() as f64;
+    let mean = (0..bins)
+        .map(|b| same.iter().map(|h| h.count[b]).sum::<f64>() / n)
+        .collect();
+    Some((mean, same.len()))
+}

@@ -1,0 +1,157 @@
+//! Each scalar result against the first swept numeric parameter: mean ± stderr
+//! per point, one line per combination of the other swept parameters, theory
+//! dashed beside it.
+
+use super::chart::{ChartSpec, Layer, Paint};
+use super::labels::{axis_label, short_name};
+use super::plots::{Points, colour, point_label, wants_log};
+use crate::analysis::summary_types::SummaryRow;
+use std::collections::{BTreeMap, BTreeSet};
+
+const THEORY: Paint = Paint {
+    rgb: (30, 30, 30),
+    alpha: 1.0,
+};
+
+/// (result name, chart) for every result in the summary, sorted by name.
+pub fn charts(summary: &[SummaryRow], points: &Points) -> Vec<(String, ChartSpec)> {
+    let results: BTreeSet<&str> = summary.iter().map(|r| r.result.as_str()).collect();
+    let x_key = x_parameter(summary);
+    results
+        .into_iter()
+        .map(|name| {
+            let rows: Vec<&SummaryRow> = summary.iter().filter(|r| r.result == name).collect();
+            (
+                name.to_string(),
+                chart(name, &rows, x_key.as_deref(), points),
+            )
+        })
+        .collect()
+}
+
+/// The first swept parameter that is numeric at every point, preferring one
+/// that varies; None when nothing numeric is swept (then x is the point id).
+fn x_parameter(summary: &[SummaryRow]) -> Option<String> {
+    let first = summary.first()?;
+    let numeric: Vec<&str> = first
+        .params
+        .iter()
+        .map(|(k, _)| k.as_str())
+        .filter(|k| summary.iter().all(|r| param(r, k).is_finite()))
+        .collect();
+    let varies = |k: &&str| {
+        let v0 = param(first, k);
+        summary.iter().any(|r| param(r, k) != v0)
+    };
+    numeric
+        .iter()
+        .copied()
+        .find(varies)
+        .or(numeric.first().copied())
+        .map(str::to_string)
+}
+
+fn param(row: &SummaryRow, key: &str) -> f64 {
+    row.params
+        .iter()
+        .find(|(k, _)| k == key)
+        .map_or(f64::NAN, |(_, v)| *v)
+}
+
+fn chart(name: &str, rows: &[&SummaryRow], x_key: Option<&str>, points: &Points) -> ChartSpec {
+    let x_of = |r: &SummaryRow| x_key.map_or(r.point_id as f64, |k| param(r, k));
+    // One line per combination of the parameters other than x.
+    let mut groups: BTreeMap<String, Vec<&SummaryRow>> = BTreeMap::new();
+    for r in rows {
+        let others: Vec<(String, toml::Value)> = points
+            .get(&r.point_id)
+            .map(|p| {
+                p.iter()
+                    .filter(|(k, _)| Some(k.as_str()) != x_key)
+                    .cloned()
+                    .collect()
+            })
+            .unwrap_or_default();
+        groups.entry(point_label(&others)).or_default().push(r);
+    }
+    let single = groups.len() == 1;
+    let mut layers = Vec::new();
+    // Theory goes last: drawn over the measurements, listed last in the legend.
+    let mut theories = Vec::new();
+    let mut theory_labelled = false;
+    for (i, (label, mut group)) in groups.into_iter().enumerate() {
+        group.sort_by(|a, b| x_of(a).total_cmp(&x_of(b)));
+        let paint = colour(i);
+        let means: Vec<(f64, f64)> = group.iter().map(|r| (x_of(r), r.mean)).collect();
+        layers.push(Layer::ErrorBars {
+            bars: group
+                .iter()
+                .filter(|r| r.stderr.is_finite())
+                .map(|r| (x_of(r), r.mean - r.stderr, r.mean, r.mean + r.stderr))
+                .collect(),
+            paint,
+        });
+        layers.push(Layer::Line {
+            points: means.clone(),
+            paint,
+            width: 2,
+            dashed: false,
+            label: None,
+        });
+        layers.push(Layer::Markers {
+            points: means,
+            paint,
+            label: Some(if single {
+                "measured (mean ± stderr)".into()
+            } else {
+                label
+            }),
+        });
+        let theory: Vec<(f64, f64)> = group
+            .iter()
+            .filter_map(|r| r.theory.map(|t| (x_of(r), t)))
+            .collect();
+        if !theory.is_empty() {
+            // One dark theory style for every line, so the legend needs one entry.
+            theories.push(theory_layer(theory, THEORY, !theory_labelled));
+            theory_labelled = true;
+        }
+    }
+    layers.extend(theories);
+    let xs = rows.iter().map(|r| x_of(r));
+    let ys = rows.iter().flat_map(|r| {
+        [
+            r.mean - r.stderr,
+            r.mean + r.stderr,
+            r.mean,
+            r.theory.unwrap_or(r.mean),
+        ]
+    });
+    let x_label = x_key.map_or("sweep point".to_string(), axis_label);
+    ChartSpec {
+        title: format!("{name} vs {}", x_key.map_or("sweep point", short_name)),
+        x_label,
+        y_label: axis_label(name),
+        x_log: x_key.is_some() && wants_log(xs),
+        y_log: wants_log(ys),
+        layers,
+    }
+}
+
+/// Theory as a dashed line (and small markers, so a single point still shows).
+fn theory_layer(points: Vec<(f64, f64)>, paint: Paint, labelled: bool) -> Layer {
+    if points.len() == 1 {
+        return Layer::Markers {
+            points,
+            paint: paint.faded(0.6),
+            label: labelled.then(|| "theory".to_string()),
+        };
+    }
+    Layer::Line {
+        points,
+        paint,
+        width: 2,
+        dashed: true,
+        label: labelled.then(|| "theory (dashed)".to_string()),
+    }
+}

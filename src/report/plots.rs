@@ -1,0 +1,148 @@
+//! The generic plots every study gets: each scalar result against the swept
+//! parameter, each time series, each histogram. Builders live in their own
+//! files; this one names, renders and writes them.
+
+use super::chart::{self, ChartSpec, Paint};
+use super::labels::{short_name, slug};
+use super::{atomic, plot_hist, plot_scalars, plot_series};
+use crate::analysis::summary_types::SummaryRow;
+use crate::study::output::RunOutput;
+use crate::study::plan_types::RunSpec;
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// A plot written into the out dir.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Figure {
+    pub file: String,
+    pub caption: String,
+}
+
+/// Swept parameters of each point, as the planner gave them.
+pub type Points = BTreeMap<u64, Vec<(String, toml::Value)>>;
+
+pub fn points(runs: &[(RunSpec, RunOutput)]) -> Points {
+    let mut points = Points::new();
+    for (spec, _) in runs {
+        points
+            .entry(spec.point_id)
+            .or_insert_with(|| spec.params.clone());
+    }
+    points
+}
+
+/// Render and write all generic plots; returns them in report order.
+pub fn write_all(
+    out_dir: &Path,
+    runs: &[(RunSpec, RunOutput)],
+    summary: &[SummaryRow],
+) -> anyhow::Result<Vec<Figure>> {
+    let points = points(runs);
+    let mut charts: Vec<(String, ChartSpec, String)> = Vec::new();
+    for (name, spec) in plot_scalars::charts(summary, &points) {
+        let caption =
+            format!("{name}: mean ± standard error per sweep point, with theory where known");
+        charts.push((format!("scalar_{}.svg", slug(&name)), spec, caption));
+    }
+    for (name, spec) in plot_series::charts(runs, &points) {
+        let caption =
+            format!("{name} against time: mean over replicas with ±1 std band, and single runs");
+        charts.push((format!("series_{}.svg", slug(&name)), spec, caption));
+    }
+    for (name, spec) in plot_hist::charts(runs, &points) {
+        let caption = format!("{name}: mean count per bin over replicas");
+        charts.push((format!("hist_{}.svg", slug(&name)), spec, caption));
+    }
+    let mut figures = Vec::new();
+    for (file, spec, caption) in charts {
+        atomic::write(&out_dir.join(&file), chart::render(&spec).as_bytes())?;
+        figures.push(Figure { file, caption });
+    }
+    Ok(figures)
+}
+
+/// Tableau-like colours: distinct, and readable on white.
+const PALETTE: [(u8, u8, u8); 8] = [
+    (31, 119, 180),
+    (214, 39, 40),
+    (44, 160, 44),
+    (255, 127, 14),
+    (148, 103, 189),
+    (140, 86, 75),
+    (227, 119, 194),
+    (23, 190, 207),
+];
+
+pub fn colour(i: usize) -> Paint {
+    Paint::solid(PALETTE[i % PALETTE.len()])
+}
+
+/// "mass=10, n=4" for a point's parameters ("all runs" when nothing is swept).
+pub fn point_label(params: &[(String, toml::Value)]) -> String {
+    if params.is_empty() {
+        return "all runs".into();
+    }
+    params
+        .iter()
+        .map(|(k, v)| format!("{}={}", short_name(k), value_text(v)))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// A TOML value without quotes around strings.
+pub fn value_text(v: &toml::Value) -> String {
+    match v {
+        toml::Value::String(s) => s.clone(),
+        toml::Value::Float(f) => super::format::num(*f),
+        other => other.to_string(),
+    }
+}
+
+/// At most `k` items spread evenly over `items`, first and last included.
+pub fn evenly<T: Copy>(items: &[T], k: usize) -> Vec<T> {
+    if items.len() <= k || k < 2 {
+        return items.iter().copied().take(k).collect();
+    }
+    (0..k)
+        .map(|i| items[(i * (items.len() - 1) + (k - 1) / 2) / (k - 1)])
+        .collect()
+}
+
+/// True when positive values span more than 1.5 decades: then a log axis
+/// shows the structure a linear one would squash.
+pub fn wants_log(values: impl Iterator<Item = f64>) -> bool {
+    let mut any = false;
+    let (mut lo, mut hi) = (f64::INFINITY, 0.0_f64);
+    for v in values.filter(|v| v.is_finite()) {
+        if v <= 0.0 {
+            return false;
+        }
+        any = true;
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    any && (hi / lo).log10() > 1.5
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn even_choice_keeps_ends() {
+        let v: Vec<u32> = (0..20).collect();
+        let e = evenly(&v, 6);
+        assert_eq!(e.len(), 6);
+        assert_eq!((e[0], e[5]), (0, 19));
+        assert_eq!(evenly(&[1, 2], 6), vec![1, 2]);
+        assert!(evenly::<u32>(&[], 6).is_empty());
+    }
+
+    #[test]
+    fn log_only_for_wide_positive() {
+        assert!(wants_log([1.0, 100.0].into_iter()));
+        assert!(!wants_log([1.0, 10.0].into_iter()));
+        assert!(!wants_log([-1.0, 100.0].into_iter()));
+        assert!(!wants_log(std::iter::empty()));
+    }
+}
