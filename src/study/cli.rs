@@ -69,7 +69,7 @@ struct RunArgs {
 static STOP: AtomicBool = AtomicBool::new(false);
 
 /// Run the command line `args` (program name first); returns the exit code.
-pub fn main(args: Vec<std::ffi::OsString>, simulate: &SimulateFn) -> i32 {
+pub fn main(args: Vec<std::ffi::OsString>, simulate: &SimulateFn<'_>) -> i32 {
     let cli = match Cli::try_parse_from(args.clone()) {
         Ok(cli) => cli,
         Err(e) => {
@@ -94,7 +94,7 @@ pub fn main(args: Vec<std::ffi::OsString>, simulate: &SimulateFn) -> i32 {
 fn run(
     a: RunArgs,
     args: Vec<std::ffi::OsString>,
-    simulate: &SimulateFn,
+    simulate: &SimulateFn<'_>,
 ) -> Result<i32, StudyError> {
     // First Ctrl-C: finish the runs in flight and keep them; second: leave now.
     // Saved runs are complete files either way, so nothing partial remains.

@@ -78,7 +78,7 @@ pub fn default_out_dir(loaded: &Loaded) -> PathBuf {
 pub fn run_study(
     path: &Path,
     options: &StudyOptions,
-    simulate: &SimulateFn,
+    simulate: &SimulateFn<'_>,
     stop: &AtomicBool,
 ) -> Result<StudyOutcome, StudyError> {
     let started = SystemTime::now();

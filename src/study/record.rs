@@ -1,6 +1,7 @@
-//! A finished run as saved in `OUT/runs/run-<id>.json`. JSON has no NaN or
-//! infinity, so floats are saved as numbers when finite and as "NaN", "inf"
-//! or "-inf" otherwise: a saved run reads back bit for bit.
+//! A finished run as saved in `OUT/runs/run-<id>.json`. Floats are saved as
+//! strings in Rust's shortest round-trip form ("0.1", "NaN", "inf"): JSON has
+//! no NaN or infinity, and serde_json's number parsing is not exact to the
+//! last bit, while a resumed study must give bit-identical tables.
 
 use super::output::{Histogram, RunOutput, Series};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
@@ -36,12 +37,8 @@ struct F(f64);
 
 impl Serialize for F {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        match self.0 {
-            x if x.is_finite() => s.serialize_f64(x),
-            x if x.is_nan() => s.serialize_str("NaN"),
-            x if x > 0.0 => s.serialize_str("inf"),
-            _ => s.serialize_str("-inf"),
-        }
+        // `{:?}` is the shortest text that parses back to the same bits.
+        s.serialize_str(&format!("{:?}", self.0))
     }
 }
 
@@ -55,12 +52,10 @@ impl<'de> Deserialize<'de> for F {
         }
         match Raw::deserialize(d)? {
             Raw::N(x) => Ok(F(x)),
-            Raw::S(s) => match s.as_str() {
-                "NaN" => Ok(F(f64::NAN)),
-                "inf" => Ok(F(f64::INFINITY)),
-                "-inf" => Ok(F(f64::NEG_INFINITY)),
-                other => Err(serde::de::Error::custom(format!("not a number: {other:?}"))),
-            },
+            Raw::S(s) => s
+                .parse::<f64>()
+                .map(F)
+                .map_err(|_| serde::de::Error::custom(format!("not a number: {s:?}"))),
         }
     }
 }

@@ -16,7 +16,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 /// The simulator as the runner sees it; tests inject a fake.
-pub type SimulateFn = dyn Fn(&RunSpec) -> anyhow::Result<RunOutput> + Sync;
+pub type SimulateFn<'a> = dyn Fn(&RunSpec) -> anyhow::Result<RunOutput> + Sync + 'a;
 
 #[derive(Debug, Clone)]
 pub struct RunnerOptions {
@@ -63,7 +63,7 @@ fn run_file(out_dir: &Path, run_id: u64) -> PathBuf {
 pub fn run_all(
     specs: &[RunSpec],
     out_dir: &Path,
-    simulate: &SimulateFn,
+    simulate: &SimulateFn<'_>,
     options: &RunnerOptions,
     stop: &AtomicBool,
 ) -> anyhow::Result<RunnerReport> {
@@ -124,7 +124,7 @@ pub fn run_all(
 }
 
 /// Run one simulation, turning errors and panics into a failed record.
-fn execute(spec: &RunSpec, simulate: &SimulateFn) -> RunRecord {
+fn execute(spec: &RunSpec, simulate: &SimulateFn<'_>) -> RunRecord {
     let start = Instant::now();
     let result = catch_unwind(AssertUnwindSafe(|| simulate(spec)));
     let (status, mut output) = match result {

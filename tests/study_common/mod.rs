@@ -63,7 +63,12 @@ pub fn write_descriptor(dir: &Path, text: &str) -> PathBuf {
 pub fn fake(spec: &RunSpec) -> anyhow::Result<RunOutput> {
     let s = spec.seed;
     let u = (s >> 11) as f64 / (1u64 << 53) as f64;
-    let mass = spec.descriptor.scene.piston.as_ref().map_or(1.0, |p| p.mass);
+    let mass = spec
+        .descriptor
+        .scene
+        .piston
+        .as_ref()
+        .map_or(1.0, |p| p.mass);
     let mut scalars = vec![("frequency".to_string(), 1.0 / mass.sqrt() + 0.01 * u)];
     if spec.replica % 2 == 0 {
         // A result only some runs report: its column must be null elsewhere.
@@ -71,8 +76,17 @@ pub fn fake(spec: &RunSpec) -> anyhow::Result<RunOutput> {
     }
     Ok(RunOutput {
         scalars,
-        series: vec![Series { observable: "piston_x".into(), t: vec![0.0, 0.5, 1.0], value: vec![u, 2.0 * u, 3.0 * u] }],
-        histograms: vec![Histogram { observable: "v".into(), lo: vec![0.0, 1.0], hi: vec![1.0, 2.0], count: vec![3.0, (s % 7) as f64] }],
+        series: vec![Series {
+            observable: "piston_x".into(),
+            t: vec![0.0, 0.5, 1.0],
+            value: vec![u, 2.0 * u, 3.0 * u],
+        }],
+        histograms: vec![Histogram {
+            observable: "v".into(),
+            lo: vec![0.0, 1.0],
+            hi: vec![1.0, 2.0],
+            count: vec![3.0, (s % 7) as f64],
+        }],
         events: s % 1000 + 10,
         collisions: s % 500 + 5,
         wall_seconds: 0.0,
@@ -88,7 +102,11 @@ pub struct Interrupting {
 
 impl Interrupting {
     pub fn new(after: usize) -> Self {
-        Interrupting { started: AtomicUsize::new(0), after, stop: AtomicBool::new(false) }
+        Interrupting {
+            started: AtomicUsize::new(0),
+            after,
+            stop: AtomicBool::new(false),
+        }
     }
     pub fn simulate(&self, spec: &RunSpec) -> anyhow::Result<RunOutput> {
         if self.started.fetch_add(1, Ordering::SeqCst) + 1 >= self.after {
