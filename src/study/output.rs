@@ -39,10 +39,7 @@ pub struct Histogram {
 
 impl RunOutput {
     pub fn scalar(&self, name: &str) -> Option<f64> {
-        self.scalars
-            .iter()
-            .find(|(n, _)| n == name)
-            .map(|(_, v)| *v)
+        self.scalars.iter().find(|(n, _)| n == name).map(|(_, v)| *v)
     }
     pub fn series(&self, name: &str) -> Option<&Series> {
         self.series.iter().find(|s| s.observable == name)
