@@ -222,7 +222,11 @@ fn check(loaded: &Loaded) -> Result<(), DescriptorError> {
         Ok(()) => return check_sweep(loaded),
         Err(p) => p,
     };
-    let position = position_of(&loaded.text, &problem.key);
+    // Sweep keys are quoted key paths: locate them as one key.
+    let position = match problem.key.strip_prefix("sweep.parameters.") {
+        Some(key) => super::locate::position_of_keys(&loaded.text, &["sweep", "parameters", key]),
+        None => position_of(&loaded.text, &problem.key),
+    };
     let mut err = DescriptorError::new(
         &loaded.file,
         format!("`{}`: {}", problem.key, problem.message),
@@ -241,7 +245,7 @@ fn check_sweep(loaded: &Loaded) -> Result<(), DescriptorError> {
         return Ok(());
     };
     for (key, values) in &sweep.parameters {
-        let place = position_of(&loaded.text, &format!("sweep.parameters.{key}"));
+        let place = super::locate::position_of_keys(&loaded.text, &["sweep", "parameters", key]);
         let fail = |message: String| {
             DescriptorError::new(&loaded.file, format!("sweep parameter `{key}`: {message}"))
                 .at(place)

@@ -20,11 +20,17 @@ pub fn line_col(text: &str, offset: usize) -> (usize, usize) {
 /// Line:col of the key at dotted `path` (array items by index), or of its
 /// deepest ancestor present in the text; None if the text does not parse.
 pub fn position_of(text: &str, path: &str) -> Option<(usize, usize)> {
+    position_of_keys(text, &path.split('.').collect::<Vec<_>>())
+}
+
+/// Like `position_of` with the keys given one by one, for keys that contain
+/// dots themselves (sweep parameters are named by quoted key paths).
+pub fn position_of_keys(text: &str, keys: &[&str]) -> Option<(usize, usize)> {
     let root = DeTable::parse(text).ok()?;
     let mut best: Option<usize> = None;
     let mut table: Option<&DeTable<'_>> = Some(root.get_ref());
     let mut array: Option<&[Spanned<DeValue<'_>>]> = None;
-    for segment in path.split('.') {
+    for &segment in keys {
         let value = if let Some(t) = table.take() {
             let Some((key, value)) = t.iter().find(|(k, _)| k.get_ref() == segment) else {
                 break;

@@ -159,6 +159,9 @@ fn sweep_error(loaded: &Loaded, key: &str, value: &toml::Value, message: &str) -
         &loaded.file,
         format!("sweep parameter `{key}` = {}: {message}", show(value)),
     )
-    .at(super::locate::position_of(&loaded.text, &at))
+    .at(super::locate::position_of_keys(
+        &loaded.text,
+        &["sweep", "parameters", key],
+    ))
     .key(at)
 }
