@@ -68,6 +68,9 @@ fn unwrap(v: Vec<F>) -> Vec<f64> {
     v.into_iter().map(|f| f.0).collect()
 }
 
+/// (observable, lo, hi, count) of one histogram.
+type SavedHistogram = (String, Vec<F>, Vec<F>, Vec<F>);
+
 #[derive(Serialize, Deserialize)]
 struct Saved {
     run_id: u64,
@@ -75,7 +78,7 @@ struct Saved {
     status: String,
     scalars: Vec<(String, F)>,
     series: Vec<(String, Vec<F>, Vec<F>)>,
-    histograms: Vec<(String, Vec<F>, Vec<F>, Vec<F>)>,
+    histograms: Vec<SavedHistogram>,
     events: u64,
     collisions: u64,
     wall_seconds: F,

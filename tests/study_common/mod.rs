@@ -70,7 +70,7 @@ pub fn fake(spec: &RunSpec) -> anyhow::Result<RunOutput> {
         .as_ref()
         .map_or(1.0, |p| p.mass);
     let mut scalars = vec![("frequency".to_string(), 1.0 / mass.sqrt() + 0.01 * u)];
-    if spec.replica % 2 == 0 {
+    if spec.replica.is_multiple_of(2) {
         // A result only some runs report: its column must be null elsewhere.
         scalars.push(("even_only".to_string(), u));
     }
