@@ -36,7 +36,7 @@ fn validate_prints_the_plan() {
         "4",
     ]);
     assert_eq!(code, 0);
-    assert!(out.contains("runs: 24"), "{out}");
+    assert!(out.contains("runs: 16"), "{out}");
 }
 
 #[test]

@@ -294,3 +294,20 @@ proptest! {
         let _ = apply_overrides(&mut t, &path, toml::Value::Integer(v));
     }
 }
+
+#[test]
+fn the_documented_example_is_valid() {
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/descriptor.md"))
+        .unwrap();
+    let example = doc
+        .split("```toml\n")
+        .nth(1)
+        .unwrap()
+        .split("```")
+        .next()
+        .unwrap();
+    let loaded = parse("docs/descriptor.md", example).unwrap();
+    assert_eq!(bonkers::study::plan::count(&loaded), (21, 168));
+    let q = quick(&loaded).unwrap();
+    assert_eq!(bonkers::study::plan::count(&q), (6, 12));
+}

@@ -137,7 +137,9 @@ fn quick_and_replicas_overrides() {
     let q = quick(&loaded).unwrap();
     assert_eq!(q.descriptor.study.replicas, 1);
     assert_eq!(q.descriptor.run.duration, Some(10.0));
+    // 2 masses x 2 counts.
+    assert_eq!(plan(&q).unwrap().len(), 4);
     let r = with_replicas(&q, 5).unwrap();
-    assert_eq!(plan(&r).unwrap().len(), 30);
+    assert_eq!(plan(&r).unwrap().len(), 20);
     assert!(r.text_as_run().contains("replicas = 5"));
 }

@@ -114,13 +114,18 @@ pub fn with_replicas(loaded: &Loaded, replicas: u32) -> Result<Loaded, Descripto
 }
 
 /// Set the dotted key `path` of `doc` to `value`, creating tables on the way.
-/// A numeric segment indexes an array (`scene.species.0.count`).
+/// A numeric segment indexes an array (`scene.species.0.count`); below
+/// `sweep.parameters.` the rest of the path is one key (a swept key path).
 pub fn apply_overrides(
     doc: &mut toml::Table,
     path: &str,
     value: toml::Value,
 ) -> Result<(), String> {
-    let segments: Vec<&str> = path.split('.').collect();
+    // Sweep parameters are themselves named by key paths: the rest is one key.
+    let segments: Vec<&str> = match path.strip_prefix("sweep.parameters.") {
+        Some(key) => vec!["sweep", "parameters", key],
+        None => path.split('.').collect(),
+    };
     if segments.iter().any(|s| s.trim().is_empty()) {
         return Err(format!(
             "`{path}` is not a key path; write keys separated by dots, e.g. `scene.piston.mass`"

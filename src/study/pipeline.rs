@@ -116,7 +116,20 @@ pub fn run_study(
     let summary = summarize(&succeeded);
     store::write_tables(&out_dir, &runs, &summary)?;
     let sections = crate::analysis::sections(&loaded.descriptor, &succeeded, &out_dir)?;
-    write_report(&out_dir, &loaded, &succeeded, &summary, &sections)?;
+    let info = RunInfo {
+        command: options.command_line.join(" "),
+        threads: report.threads,
+        started: rfc3339(started),
+        finished: rfc3339(SystemTime::now()),
+        version: version().to_string(),
+        total_wall_seconds: runs.iter().map(|(_, r)| r.output.wall_seconds).sum(),
+        failed_runs: runs
+            .iter()
+            .filter(|(_, r)| !r.ok())
+            .map(|(s, r)| (s.run_id, r.status.clone()))
+            .collect(),
+    };
+    write_report(&out_dir, &loaded, &succeeded, &summary, &sections, &info)?;
 
     let counts = RunCounts {
         planned: runs.len(),
@@ -125,11 +138,11 @@ pub fn run_study(
         resumed: report.resumed,
     };
     let manifest = Manifest {
-        bonkers_version: version().to_string(),
+        bonkers_version: info.version,
         command_line: options.command_line.clone(),
-        started: rfc3339(started),
-        finished: rfc3339(SystemTime::now()),
-        threads: report.threads,
+        started: info.started,
+        finished: info.finished,
+        threads: info.threads,
         runs: counts,
         overrides: loaded
             .overrides
@@ -156,23 +169,43 @@ fn summarize(runs: &[(RunSpec, RunOutput)]) -> Vec<SummaryRow> {
     store::basic_summary(runs, crate::theory::predict)
 }
 
-/// SEAM (report): switch to `crate::report::write(out_dir, descriptor, runs,
-/// summary, sections, &meta)` once it lands. Until then a plain report.md
-/// lists what was measured, so every run still leaves a readable summary.
+/// How the study ran; the fields of `report::ReportMeta`.
+struct RunInfo {
+    command: String,
+    threads: usize,
+    started: String,
+    finished: String,
+    version: String,
+    total_wall_seconds: f64,
+    /// (run id, status) of runs that failed.
+    failed_runs: Vec<(u64, String)>,
+}
+
+/// SEAM (report): switch to `crate::report::write(out_dir, &loaded.descriptor,
+/// runs, summary, sections, &ReportMeta { ..info })` once it lands. Until then
+/// a plain report.md lists what was measured.
 fn write_report(
     out_dir: &Path,
     loaded: &Loaded,
     runs: &[(RunSpec, RunOutput)],
     summary: &[SummaryRow],
     sections: &[crate::analysis::ReportSection],
+    info: &RunInfo,
 ) -> anyhow::Result<()> {
     use std::fmt::Write;
     let d = &loaded.descriptor;
     let mut md = format!(
-        "# {}\n\n{}\n\n{} successful runs.\n\n",
+        "# {}\n\n{}\n\n{} successful runs, {} failed; {:.1} s of run time on {} threads.\n\n`{}` (bonkers {}, {} to {})\n\n",
         d.study.name,
         d.study.description,
-        runs.len()
+        runs.len(),
+        info.failed_runs.len(),
+        info.total_wall_seconds,
+        info.threads,
+        info.command,
+        info.version,
+        info.started,
+        info.finished
     );
     md.push_str("| point | result | n | mean | stderr | theory |\n|---|---|---|---|---|---|\n");
     for r in summary {
@@ -182,6 +215,9 @@ fn write_report(
             "| {} | {} | {} | {:.6} | {:.2e} | {theory} |",
             r.point_id, r.result, r.n, r.mean, r.stderr
         );
+    }
+    for (id, status) in &info.failed_runs {
+        let _ = writeln!(md, "\nrun {id}: {status}");
     }
     for s in sections {
         let _ = write!(md, "\n## {}\n\n{}\n", s.title, s.markdown);

@@ -51,6 +51,7 @@ series = ["piston_x"]
 [quick]
 "study.replicas" = 1
 "run.duration" = 10.0
+"sweep.parameters.scene.piston.mass" = [1.0, 100.0]
 "#;
 
 pub fn write_descriptor(dir: &Path, text: &str) -> PathBuf {
