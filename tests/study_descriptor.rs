@@ -174,8 +174,15 @@ fn sweep_errors() {
     assert_has(&msg, &["value \"heavy\"", "invalid type"]);
     let msg = error(&PISTON.replace("[1.0, 10.0, 100.0]", "[1.0, -2.0]"));
     assert_has(&msg, &["value -2.0 makes `scene.piston.mass` invalid"]);
+    let msg = error(&PISTON.replace("\"scene.piston.mass\" =", "\"study.seed\" ="));
+    assert_has(&msg, &["`study.seed` is not a key path that can be swept"]);
+    let msg = error(&PISTON.replace("steps = 2 }", "steps = 1000000000000 }"));
+    assert_has(&msg, &["more than a study can run"]);
     let msg = error(&PISTON.replace("[1.0, 10.0, 100.0]", "[]"));
     assert_has(&msg, &["s.toml:30:1:", "has no values"]);
+    // A range that is not whole in the middle cannot sweep a count.
+    let msg = error(&PISTON.replace("steps = 2 }", "steps = 4 }"));
+    assert_has(&msg, &["value 8.333", "expected a whole number"]);
     let msg = error(&PISTON.replace("steps = 2 }", "steps = 0 }"));
     assert_has(&msg, &["steps >= 1"]);
     let msg = error(&PISTON.replace(

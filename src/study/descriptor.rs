@@ -263,7 +263,7 @@ fn check_sweep(loaded: &Loaded) -> Result<(), DescriptorError> {
                 None => e,
             }
         })?;
-        for value in super::plan::expand_values(values) {
+        for value in representatives(values) {
             let mut table = loaded.table.clone();
             apply_overrides(&mut table, key, value.clone()).map_err(&fail)?;
             let shown = show(&value);
@@ -285,6 +285,21 @@ fn check_sweep(loaded: &Loaded) -> Result<(), DescriptorError> {
         }
     }
     Ok(())
+}
+
+/// The values of a sweep parameter worth checking: all of a list; of a
+/// (monotonic) range its ends and its first non-whole value, which between
+/// them meet every key's type and bounds that the range meets.
+fn representatives(values: &super::descriptor_types::SweepValues) -> Vec<toml::Value> {
+    let all = super::plan::expand_values(values);
+    if matches!(values, super::descriptor_types::SweepValues::List(_)) {
+        return all;
+    }
+    let mut picked: Vec<toml::Value> = all.first().into_iter().chain(all.last()).cloned().collect();
+    if let Some(f) = all.iter().find(|v| v.is_float()) {
+        picked.push(f.clone());
+    }
+    picked
 }
 
 /// A TOML value as the user would write it.

@@ -9,8 +9,9 @@ use super::seeds::run_seed;
 
 /// More runs than this need `--yes`.
 pub const CONFIRM_ABOVE: u64 = 100_000;
-/// More runs than this are refused outright: the plan alone would not fit in memory.
-pub const HARD_LIMIT: u64 = 50_000_000;
+/// More runs than this are refused outright: every planned run carries its
+/// own descriptor, so the plan alone would not fit in memory.
+pub const HARD_LIMIT: u64 = 2_000_000;
 
 /// The values a sweep parameter takes, in order.
 pub fn expand_values(values: &SweepValues) -> Vec<toml::Value> {
@@ -113,7 +114,7 @@ pub fn plan(loaded: &Loaded) -> Result<Vec<RunSpec>, DescriptorError> {
     }
     let d = &loaded.descriptor;
     let replicas = d.study.replicas;
-    let mut specs = Vec::with_capacity(runs as usize);
+    let mut specs = Vec::new();
     for (point_id, params) in points(d.sweep.as_ref()).into_iter().enumerate() {
         let point_id = point_id as u64;
         let mut table = loaded.table.clone();

@@ -30,8 +30,9 @@ fn positive(key: &str, v: f64) -> Check {
     }
 }
 
-/// Top-level sections a sweep or override may set.
-pub const SWEEPABLE: [&str; 5] = ["study", "scene", "run", "observe", "analysis"];
+/// Top-level sections a sweep may set. `[study]` is not among them: replicas
+/// and seeds shape the plan itself, so they cannot vary within it.
+pub const SWEEPABLE: [&str; 4] = ["scene", "run", "observe", "analysis"];
 
 pub fn descriptor(d: &Descriptor) -> Check {
     study(d)?;
@@ -254,6 +255,13 @@ fn sweep(d: &Descriptor) -> Check {
             SweepValues::Range(r) => {
                 if r.steps == 0 {
                     return bad(at, "range needs `steps >= 1`", None);
+                }
+                if r.steps as u64 > super::plan::HARD_LIMIT {
+                    return bad(
+                        at,
+                        format!("{} steps is more than a study can run", r.steps),
+                        Some("use fewer steps"),
+                    );
                 }
                 if !r.from.is_finite() || !r.to.is_finite() {
                     return bad(at, "range bounds must be finite numbers", None);
