@@ -221,12 +221,30 @@ fn override_errors_name_their_origin() {
             "`run.duration`: must be a positive number",
         ],
     );
+    let misspelt = parse(
+        "s.toml",
+        &PISTON.replace("\"run.duration\" = 10.0", "\"run.durration\" = 10.0"),
+    )
+    .unwrap();
+    let msg = quick(&misspelt).unwrap_err().to_string();
+    assert_has(
+        &msg,
+        &[
+            "s.toml:44:1: [quick] (--quick): `run.durration` = 10.0: unknown key `durration`",
+            "did you mean `duration`?",
+        ],
+    );
+    assert!(bad_quick_position(&bad_quick).is_some());
     let no_quick = parse("s.toml", &PISTON[..PISTON.find("[quick]").unwrap()]).unwrap();
     assert_has(
         &quick(&no_quick).unwrap_err().to_string(),
         &["no [quick] table"],
     );
     assert!(with_replicas(&loaded, 0).is_err());
+}
+
+fn bad_quick_position(loaded: &bonkers::study::descriptor::Loaded) -> Option<(usize, usize)> {
+    quick(loaded).unwrap_err().position
 }
 
 #[test]

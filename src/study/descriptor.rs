@@ -68,18 +68,39 @@ pub fn with_overrides(
     overrides: &[(String, toml::Value)],
     origin: &str,
 ) -> Result<Loaded, DescriptorError> {
+    apply_all(loaded, overrides, origin, None)
+}
+
+/// `with_overrides`; if the overrides come from a table of the source (`[quick]`),
+/// errors point at the entry that caused them.
+fn apply_all(
+    loaded: &Loaded,
+    overrides: &[(String, toml::Value)],
+    origin: &str,
+    source_table: Option<&str>,
+) -> Result<Loaded, DescriptorError> {
+    let place = |path: &str| {
+        source_table.and_then(|t| super::locate::position_of_keys(&loaded.text, &[t, path]))
+    };
     let mut table = loaded.table.clone();
+    let mut descriptor = loaded.descriptor.clone();
+    // One at a time, so an error names the override that caused it.
     for (path, value) in overrides {
-        apply_overrides(&mut table, path, value.clone()).map_err(|msg| {
+        let fail = |message: String| {
             DescriptorError::new(
                 &loaded.file,
-                format!("{origin}: cannot set `{path}`: {msg}"),
+                format!("{origin}: `{path}` = {}: {message}", show(value)),
             )
+            .at(place(path))
             .key(path.clone())
+        };
+        apply_overrides(&mut table, path, value.clone()).map_err(&fail)?;
+        descriptor = from_table(&loaded.file, &table).map_err(|e| {
+            let mut out = fail(e.message);
+            out.hints = e.hints;
+            out
         })?;
     }
-    let descriptor = from_table(&loaded.file, &table)
-        .map_err(|e| prefix(e, &format!("after applying {origin}: ")))?;
     let mut all = loaded.overrides.clone();
     all.extend(overrides.iter().cloned());
     let next = Loaded {
@@ -89,7 +110,16 @@ pub fn with_overrides(
         descriptor,
         overrides: all,
     };
-    check(&next).map_err(|e| prefix(e, &format!("after applying {origin}: ")))?;
+    check(&next).map_err(|mut e| {
+        // A problem at an overridden key was caused by the override.
+        if let Some((path, _)) = overrides
+            .iter()
+            .find(|(p, _)| e.key.as_deref().is_some_and(|k| k.starts_with(p.as_str())))
+        {
+            e.position = place(path);
+        }
+        prefix(e, &format!("after applying {origin}: "))
+    })?;
     Ok(next)
 }
 
@@ -100,7 +130,7 @@ pub fn quick(loaded: &Loaded) -> Result<Loaded, DescriptorError> {
         return Err(DescriptorError::new(&loaded.file, "--quick: this descriptor has no [quick] table")
             .hint("add e.g. `[quick]` with `\"study.replicas\" = 2` and `\"run.duration\" = 100.0`, or drop --quick"));
     }
-    with_overrides(loaded, &overrides, "[quick] (--quick)")
+    apply_all(loaded, &overrides, "[quick] (--quick)", Some("quick"))
 }
 
 /// `--replicas N`: override `study.replicas`.
