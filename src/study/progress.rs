@@ -71,12 +71,13 @@ impl Progress {
         s.collisions += collisions;
         let rate = s.collisions as f64 / s.start.elapsed().as_secs_f64().max(1e-9);
         if let Some(bar) = &self.bar {
+            // Position first: the message update redraws with it.
+            bar.set_position(s.done);
             bar.set_message(format!(
                 "{} collisions/s{}",
                 si(rate),
                 failed_note(s.failed)
             ));
-            bar.inc(1);
         } else if self.plain {
             let tenth = s.done * 10 / self.total.max(1);
             if tenth > s.last_tenth || s.last_line.elapsed() >= PLAIN_EVERY || s.done == self.total
