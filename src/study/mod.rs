@@ -1,5 +1,18 @@
 //! `study run`: descriptor -> plan -> parallel runs -> tables -> report.
 
+pub mod cli;
+pub mod descriptor;
 pub mod descriptor_types;
+pub mod errors;
+pub mod locate;
+pub mod manifest;
 pub mod output;
+pub mod pipeline;
+pub mod plan;
 pub mod plan_types;
+pub mod progress;
+pub mod record;
+pub mod runner;
+pub mod seeds;
+pub mod store;
+pub mod validate;

@@ -1,0 +1,226 @@
+//! `study run` end to end: descriptor -> plan -> runs -> tables -> report -> manifest.
+//! The calls into the analysis and report layers are the two marked seams.
+
+use super::descriptor::{self, Loaded};
+use super::errors::{DescriptorError, StudyError};
+use super::manifest::{Manifest, RunCounts, rfc3339, version};
+use super::output::RunOutput;
+use super::plan::{self, CONFIRM_ABOVE};
+use super::plan_types::RunSpec;
+use super::progress::ProgressMode;
+use super::record::RunRecord;
+use super::runner::{RunnerOptions, SimulateFn, run_all};
+use super::store;
+use crate::analysis::summary_types::SummaryRow;
+use anyhow::Context;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicBool;
+use std::time::SystemTime;
+
+/// Options of `study run` (and what `study validate` shares).
+#[derive(Debug, Clone)]
+pub struct StudyOptions {
+    /// Output directory; default `reports/<study name>/`.
+    pub out: Option<PathBuf>,
+    pub threads: Option<usize>,
+    pub replicas: Option<u32>,
+    pub quick: bool,
+    pub fresh: bool,
+    pub progress: ProgressMode,
+    /// Confirm plans of more than `CONFIRM_ABOVE` runs.
+    pub yes: bool,
+    /// Recorded in the manifest.
+    pub command_line: Vec<String>,
+}
+
+/// What a finished study did.
+#[derive(Debug, Clone)]
+pub struct StudyOutcome {
+    pub out_dir: PathBuf,
+    pub planned: usize,
+    pub ran: usize,
+    pub failed: usize,
+    pub resumed: usize,
+}
+
+/// Load the descriptor and apply `--quick` and `--replicas`, in that order.
+pub fn prepare(path: &Path, replicas: Option<u32>, quick: bool) -> Result<Loaded, DescriptorError> {
+    let mut loaded = descriptor::load(path)?;
+    if quick {
+        loaded = descriptor::quick(&loaded)?;
+    }
+    if let Some(n) = replicas {
+        loaded = descriptor::with_replicas(&loaded, n)?;
+    }
+    Ok(loaded)
+}
+
+/// Refuse plans too large to start by accident.
+pub fn confirm_size(loaded: &Loaded, yes: bool) -> Result<(), DescriptorError> {
+    let (points, runs) = plan::count(loaded);
+    if runs > CONFIRM_ABOVE && !yes {
+        return Err(DescriptorError::new(
+            &loaded.file,
+            format!("the plan has {runs} runs ({points} sweep points x {} replicas), more than {CONFIRM_ABOVE}", loaded.descriptor.study.replicas),
+        )
+        .hint("pass --yes if you mean it, or sweep fewer values / fewer replicas"));
+    }
+    Ok(())
+}
+
+pub fn default_out_dir(loaded: &Loaded) -> PathBuf {
+    Path::new("reports").join(&loaded.descriptor.study.name)
+}
+
+/// Run the study at `path`. Completed runs are kept under `OUT/runs/` so an
+/// interrupted study resumes; tables, report and manifest are written only
+/// when every run has finished.
+pub fn run_study(
+    path: &Path,
+    options: &StudyOptions,
+    simulate: &SimulateFn<'_>,
+    stop: &AtomicBool,
+) -> Result<StudyOutcome, StudyError> {
+    let started = SystemTime::now();
+    let loaded = prepare(path, options.replicas, options.quick)?;
+    confirm_size(&loaded, options.yes)?;
+    let specs = plan::plan(&loaded)?;
+    let out_dir = options
+        .out
+        .clone()
+        .unwrap_or_else(|| default_out_dir(&loaded));
+    std::fs::create_dir_all(&out_dir)
+        .with_context(|| format!("cannot create the output directory {}", out_dir.display()))?;
+
+    let runner_options = RunnerOptions {
+        threads: options.threads,
+        fresh: options.fresh,
+        progress: options.progress,
+    };
+    let report = run_all(&specs, &out_dir, simulate, &runner_options, stop)?;
+    if report.interrupted {
+        return Err(StudyError::Interrupted(
+            report.records.iter().flatten().count(),
+        ));
+    }
+    let runs: Vec<(RunSpec, RunRecord)> = specs
+        .into_iter()
+        .zip(report.records.into_iter().flatten())
+        .collect();
+    let succeeded: Vec<(RunSpec, RunOutput)> = runs
+        .iter()
+        .filter(|(_, r)| r.ok())
+        .map(|(s, r)| (s.clone(), r.output.clone()))
+        .collect();
+
+    let summary = summarize(&succeeded);
+    store::write_tables(&out_dir, &runs, &summary)?;
+    let sections = crate::analysis::sections(&loaded.descriptor, &succeeded, &out_dir)?;
+    let info = RunInfo {
+        command: options.command_line.join(" "),
+        threads: report.threads,
+        started: rfc3339(started),
+        finished: rfc3339(SystemTime::now()),
+        version: version().to_string(),
+        total_wall_seconds: runs.iter().map(|(_, r)| r.output.wall_seconds).sum(),
+        failed_runs: runs
+            .iter()
+            .filter(|(_, r)| !r.ok())
+            .map(|(s, r)| (s.run_id, r.status.clone()))
+            .collect(),
+    };
+    write_report(&out_dir, &loaded, &succeeded, &summary, &sections, &info)?;
+
+    let counts = RunCounts {
+        planned: runs.len(),
+        done: report.ran,
+        failed: report.failed,
+        resumed: report.resumed,
+    };
+    let manifest = Manifest {
+        bonkers_version: info.version,
+        command_line: options.command_line.clone(),
+        started: info.started,
+        finished: info.finished,
+        threads: info.threads,
+        runs: counts,
+        overrides: loaded
+            .overrides
+            .iter()
+            .map(|(k, v)| (k.clone(), descriptor::show(v)))
+            .collect(),
+        descriptor_toml: loaded.text_as_run(),
+        descriptor: serde_json::to_value(&loaded.descriptor).unwrap_or_default(),
+    };
+    let json = manifest.to_json().context("cannot encode manifest.json")?;
+    store::write_atomic(&out_dir.join("manifest.json"), json.as_bytes())?;
+    Ok(StudyOutcome {
+        out_dir,
+        planned: counts.planned,
+        ran: counts.done,
+        failed: counts.failed,
+        resumed: counts.resumed,
+    })
+}
+
+/// SEAM (analysis): per-point statistics. Switch to
+/// `crate::analysis::summary::summarize(runs, crate::theory::predict)` once it lands.
+fn summarize(runs: &[(RunSpec, RunOutput)]) -> Vec<SummaryRow> {
+    store::basic_summary(runs, crate::theory::predict)
+}
+
+/// How the study ran; the fields of `report::ReportMeta`.
+struct RunInfo {
+    command: String,
+    threads: usize,
+    started: String,
+    finished: String,
+    version: String,
+    total_wall_seconds: f64,
+    /// (run id, status) of runs that failed.
+    failed_runs: Vec<(u64, String)>,
+}
+
+/// SEAM (report): switch to `crate::report::write(out_dir, &loaded.descriptor,
+/// runs, summary, sections, &ReportMeta { ..info })` once it lands. Until then
+/// a plain report.md lists what was measured.
+fn write_report(
+    out_dir: &Path,
+    loaded: &Loaded,
+    runs: &[(RunSpec, RunOutput)],
+    summary: &[SummaryRow],
+    sections: &[crate::analysis::ReportSection],
+    info: &RunInfo,
+) -> anyhow::Result<()> {
+    use std::fmt::Write;
+    let d = &loaded.descriptor;
+    let mut md = format!(
+        "# {}\n\n{}\n\n{} successful runs, {} failed; {:.1} s of run time on {} threads.\n\n`{}` (bonkers {}, {} to {})\n\n",
+        d.study.name,
+        d.study.description,
+        runs.len(),
+        info.failed_runs.len(),
+        info.total_wall_seconds,
+        info.threads,
+        info.command,
+        info.version,
+        info.started,
+        info.finished
+    );
+    md.push_str("| point | result | n | mean | stderr | theory |\n|---|---|---|---|---|---|\n");
+    for r in summary {
+        let theory = r.theory.map_or("—".to_string(), |t| format!("{t:.6}"));
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {:.6} | {:.2e} | {theory} |",
+            r.point_id, r.result, r.n, r.mean, r.stderr
+        );
+    }
+    for (id, status) in &info.failed_runs {
+        let _ = writeln!(md, "\nrun {id}: {status}");
+    }
+    for s in sections {
+        let _ = write!(md, "\n## {}\n\n{}\n", s.title, s.markdown);
+    }
+    store::write_atomic(&out_dir.join("report.md"), md.as_bytes())
+}

@@ -1,0 +1,168 @@
+//! Sweep x replicas -> one `RunSpec` per simulation, each with its own seed and
+//! the descriptor as it applies to its sweep point.
+
+use super::descriptor::{Loaded, apply_overrides, from_table, show};
+use super::descriptor_types::{Scale, SweepMode, SweepSection, SweepValues};
+use super::errors::DescriptorError;
+use super::plan_types::RunSpec;
+use super::seeds::run_seed;
+
+/// More runs than this need `--yes`.
+pub const CONFIRM_ABOVE: u64 = 100_000;
+/// More runs than this are refused outright: every planned run carries its
+/// own descriptor, so the plan alone would not fit in memory.
+pub const HARD_LIMIT: u64 = 2_000_000;
+
+/// The values a sweep parameter takes, in order.
+pub fn expand_values(values: &SweepValues) -> Vec<toml::Value> {
+    match values {
+        SweepValues::List(v) => v.clone(),
+        SweepValues::Range(r) => (0..r.steps)
+            .map(|i| {
+                let f = if r.steps == 1 {
+                    0.0
+                } else {
+                    i as f64 / (r.steps - 1) as f64
+                };
+                let x = match (i, r.scale) {
+                    (0, _) => r.from,
+                    (i, _) if i + 1 == r.steps => r.to,
+                    (_, Scale::Linear) => r.from + (r.to - r.from) * f,
+                    (_, Scale::Log) => r.from * (r.to / r.from).powf(f),
+                };
+                number(x)
+            })
+            .collect(),
+    }
+}
+
+/// Whole numbers become TOML integers so they also fit integer keys (counts);
+/// serde reads an integer into a float key just as well.
+fn number(x: f64) -> toml::Value {
+    if x.fract() == 0.0 && x.abs() < 9.0e15 {
+        toml::Value::Integer(x as i64)
+    } else {
+        toml::Value::Float(x)
+    }
+}
+
+/// Sweep points in order: product (last key varies fastest) or zip.
+pub fn points(sweep: Option<&SweepSection>) -> Vec<Vec<(String, toml::Value)>> {
+    let Some(sweep) = sweep else {
+        return vec![Vec::new()];
+    };
+    let axes: Vec<(String, Vec<toml::Value>)> = sweep
+        .parameters
+        .iter()
+        .map(|(k, v)| (k.clone(), expand_values(v)))
+        .collect();
+    match sweep.mode {
+        SweepMode::Zip => {
+            let n = axes.iter().map(|(_, v)| v.len()).min().unwrap_or(0);
+            (0..n)
+                .map(|i| {
+                    axes.iter()
+                        .map(|(k, v)| (k.clone(), v[i].clone()))
+                        .collect()
+                })
+                .collect()
+        }
+        SweepMode::Product => axes.iter().fold(vec![Vec::new()], |acc, (k, values)| {
+            acc.iter()
+                .flat_map(|prefix| {
+                    values.iter().map(move |v| {
+                        let mut p = prefix.clone();
+                        p.push((k.clone(), v.clone()));
+                        p
+                    })
+                })
+                .collect()
+        }),
+    }
+}
+
+/// (sweep points, runs) without building the plan; saturates instead of overflowing.
+pub fn count(loaded: &Loaded) -> (u64, u64) {
+    let d = &loaded.descriptor;
+    let points = match &d.sweep {
+        None => 1,
+        Some(s) => {
+            let lens = s.parameters.values().map(|v| match v {
+                SweepValues::List(l) => l.len() as u64,
+                SweepValues::Range(r) => r.steps as u64,
+            });
+            match s.mode {
+                SweepMode::Zip => lens.min().unwrap_or(0),
+                SweepMode::Product => lens.fold(1u64, u64::saturating_mul),
+            }
+        }
+    };
+    (points, points.saturating_mul(u64::from(d.study.replicas)))
+}
+
+/// Expand the descriptor into runs: run_id = point_id * replicas + replica.
+pub fn plan(loaded: &Loaded) -> Result<Vec<RunSpec>, DescriptorError> {
+    let (_, runs) = count(loaded);
+    if runs > HARD_LIMIT {
+        return Err(DescriptorError::new(
+            &loaded.file,
+            format!("the plan has {runs} runs, more than the {HARD_LIMIT} one study can hold"),
+        )
+        .hint(
+            "sweep fewer values or fewer replicas, or split the study into several descriptors",
+        ));
+    }
+    let d = &loaded.descriptor;
+    let replicas = d.study.replicas;
+    let mut specs = Vec::new();
+    for (point_id, params) in points(d.sweep.as_ref()).into_iter().enumerate() {
+        let point_id = point_id as u64;
+        let mut table = loaded.table.clone();
+        for (key, value) in &params {
+            apply_overrides(&mut table, key, value.clone())
+                .map_err(|m| sweep_error(loaded, key, value, &m))?;
+        }
+        let descriptor = from_table(&loaded.file, &table).map_err(|e| {
+            let shown: Vec<String> = params
+                .iter()
+                .map(|(k, v)| format!("`{k}` = {}", show(v)))
+                .collect();
+            let mut err = DescriptorError::new(
+                &loaded.file,
+                format!(
+                    "sweep point {point_id} ({}): {}",
+                    shown.join(", "),
+                    e.message
+                ),
+            )
+            .at(super::locate::position_of(&loaded.text, "sweep.parameters"))
+            .key("sweep.parameters");
+            err.hints = e.hints;
+            err
+        })?;
+        for replica in 0..replicas {
+            specs.push(RunSpec {
+                run_id: point_id * u64::from(replicas) + u64::from(replica),
+                point_id,
+                replica,
+                seed: run_seed(d.study.seed, point_id, replica),
+                params: params.clone(),
+                descriptor: descriptor.clone(),
+            });
+        }
+    }
+    Ok(specs)
+}
+
+fn sweep_error(loaded: &Loaded, key: &str, value: &toml::Value, message: &str) -> DescriptorError {
+    let at = format!("sweep.parameters.{key}");
+    DescriptorError::new(
+        &loaded.file,
+        format!("sweep parameter `{key}` = {}: {message}", show(value)),
+    )
+    .at(super::locate::position_of_keys(
+        &loaded.text,
+        &["sweep", "parameters", key],
+    ))
+    .key(at)
+}

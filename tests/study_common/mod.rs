@@ -1,0 +1,118 @@
+//! Shared by the study tests: a valid descriptor and a fast, deterministic
+//! fake simulator (outputs are a pure function of the run's seed and params).
+#![allow(dead_code)]
+
+use bonkers::study::output::{Histogram, RunOutput, Series};
+use bonkers::study::plan_types::RunSpec;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+
+pub const PISTON: &str = r#"# A small piston study.
+[study]
+name = "piston-test"
+description = "Piston frequency against piston mass"
+replicas = 3
+seed = 42
+
+[scene]
+dimension = 1
+box = [20.0]
+boundary = ["walls"]
+
+[[scene.species]]
+name = "gas"
+count = 10
+mass = 1.0
+
+[scene.piston]
+mass = 5.0
+position = 0.5
+
+[scene.velocities]
+kind = "maxwell"
+temperature = 1.0
+
+[sweep]
+mode = "product"
+
+[sweep.parameters]
+"scene.piston.mass" = [1.0, 10.0, 100.0]
+"scene.species.0.count" = { from = 5, to = 15, steps = 2 }
+
+[run]
+duration = 100.0
+equilibrate = 10.0
+sample_every = 0.5
+
+[observe]
+scalars = ["frequency"]
+series = ["piston_x"]
+
+[quick]
+"study.replicas" = 1
+"run.duration" = 10.0
+"sweep.parameters.scene.piston.mass" = [1.0, 100.0]
+"#;
+
+pub fn write_descriptor(dir: &Path, text: &str) -> PathBuf {
+    let path = dir.join("study.toml");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// Outputs depend only on the spec: a stand-in for the real simulator.
+pub fn fake(spec: &RunSpec) -> anyhow::Result<RunOutput> {
+    let s = spec.seed;
+    let u = (s >> 11) as f64 / (1u64 << 53) as f64;
+    let mass = spec
+        .descriptor
+        .scene
+        .piston
+        .as_ref()
+        .map_or(1.0, |p| p.mass);
+    let mut scalars = vec![("frequency".to_string(), 1.0 / mass.sqrt() + 0.01 * u)];
+    if spec.replica.is_multiple_of(2) {
+        // A result only some runs report: its column must be null elsewhere.
+        scalars.push(("even_only".to_string(), u));
+    }
+    Ok(RunOutput {
+        scalars,
+        series: vec![Series {
+            observable: "piston_x".into(),
+            t: vec![0.0, 0.5, 1.0],
+            value: vec![u, 2.0 * u, 3.0 * u],
+        }],
+        histograms: vec![Histogram {
+            observable: "v".into(),
+            lo: vec![0.0, 1.0],
+            hi: vec![1.0, 2.0],
+            count: vec![3.0, (s % 7) as f64],
+        }],
+        events: s % 1000 + 10,
+        collisions: s % 500 + 5,
+        wall_seconds: 0.0,
+    })
+}
+
+/// A fake that raises the stop flag once `after` runs have started, like Ctrl-C.
+pub struct Interrupting {
+    pub started: AtomicUsize,
+    pub after: usize,
+    pub stop: AtomicBool,
+}
+
+impl Interrupting {
+    pub fn new(after: usize) -> Self {
+        Interrupting {
+            started: AtomicUsize::new(0),
+            after,
+            stop: AtomicBool::new(false),
+        }
+    }
+    pub fn simulate(&self, spec: &RunSpec) -> anyhow::Result<RunOutput> {
+        if self.started.fetch_add(1, Ordering::SeqCst) + 1 >= self.after {
+            self.stop.store(true, Ordering::SeqCst);
+        }
+        fake(spec)
+    }
+}
