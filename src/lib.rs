@@ -2,6 +2,7 @@
 
 pub mod analysis;
 pub mod engine;
+pub mod observe;
 pub mod report;
 pub mod scene;
 pub mod simulate;

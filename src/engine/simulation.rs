@@ -10,7 +10,7 @@ use rand_chacha::ChaCha8Rng;
 
 use super::boundary::{SimBox, Wall, wall_time};
 use super::build::{BuildError, check_overlaps, validate};
-use super::collide::{bounce, contact_time};
+use super::collide::{bounce, contact_time, line_contact_time};
 use super::neighbours::{Crossing, Image, Neighbourhood, image_shift, no_shift};
 use super::observer::{Observer, PairCollision, Snapshot, WallHit};
 use super::particle::Particle;
@@ -117,6 +117,11 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         self.sample_every = every.filter(|dt| *dt > 0.0 && dt.is_finite());
         self.sample_start = self.time();
         self.samples_taken = 0;
+    }
+
+    /// Hand back the observer when the run is over.
+    pub fn into_observer(self) -> O {
+        self.observer
     }
 
     /// Absolute simulation time.
@@ -243,8 +248,16 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         let shift = &self.shifts[image as usize];
         let r: Vector<D> = std::array::from_fn(|k| q.pos[k] + shift[k] - p.pos[k]);
         let dist = norm2(&r).sqrt();
-        if dist > 0.0 {
-            let n: Vector<D> = std::array::from_fn(|k| r[k] / dist);
+        // On a line the side is known from the chain order, even for point
+        // rods in contact (no separation to take a direction from).
+        let normal = if D == 1 {
+            Some([line_side(i, j, image); D])
+        } else if dist > 0.0 {
+            Some(std::array::from_fn(|k| r[k] / dist))
+        } else {
+            None
+        };
+        if let Some(n) = normal {
             if let Some(b) = bounce(&p.vel, &q.vel, p.inv_mass, q.inv_mass, &n) {
                 for k in 0..D {
                     self.particles[i].vel[k] += b.dv_i[k];
@@ -340,7 +353,13 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             let x_j = q.position_at(now);
             let r: Vector<D> = std::array::from_fn(|k| x_j[k] + shift[k] - x_i[k]);
             let v = sub(&q.vel, &p.vel);
-            if let Some(dt) = contact_time(&r, &v, p.radius + q.radius) {
+            let sigma = p.radius + q.radius;
+            let dt = if D == 1 {
+                line_contact_time(r[0], -v[0], line_side(i, j, image), sigma)
+            } else {
+                contact_time(&r, &v, sigma)
+            };
+            if let Some(dt) = dt {
                 let t = now + dt;
                 if t < best_t {
                     best_t = t;
@@ -409,4 +428,11 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     pub fn identity_image() -> Image {
         no_shift::<D>()
     }
+}
+
+/// In 1D: +1 if j is i's right-hand neighbour in the chain, -1 if left
+/// (image codes: 0 one box left, 1 none, 2 one box right).
+#[inline(always)]
+fn line_side(i: usize, j: usize, image: Image) -> f64 {
+    if image == 2 || (image == 1 && j > i) { 1.0 } else { -1.0 }
 }

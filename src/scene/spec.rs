@@ -94,8 +94,6 @@ pub enum Placement {
         #[serde(default)]
         lattice: Option<String>,
     },
-    /// Lubachevsky–Stillinger growth to a packing fraction.
-    Compress { packing_fraction: f64 },
     /// Explicit positions, one list per particle.
     Explicit { positions: Vec<Vec<f64>> },
 }
@@ -146,6 +144,10 @@ pub struct PistonSpec {
     /// Half thickness of the piston (1D: its radius).
     #[serde(default = "half")]
     pub radius: f64,
+    /// Particles per side: sets the count of every species (one species per
+    /// side), so one sweep key changes both gases together.
+    #[serde(default)]
+    pub per_side: Option<usize>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -1,6 +1,7 @@
 //! `study run` end to end: descriptor -> plan -> runs -> tables -> report -> manifest.
 //! The calls into the analysis and report layers are the two marked seams.
 
+use crate::report::ReportMeta;
 use super::descriptor::{self, Loaded};
 use super::errors::{DescriptorError, StudyError};
 use super::manifest::{Manifest, RunCounts, rfc3339, version};
@@ -116,7 +117,7 @@ pub fn run_study(
     let summary = summarize(&succeeded);
     store::write_tables(&out_dir, &runs, &summary)?;
     let sections = crate::analysis::sections(&loaded.descriptor, &succeeded, &out_dir)?;
-    let info = RunInfo {
+    let info = ReportMeta {
         command: options.command_line.join(" "),
         threads: report.threads,
         started: rfc3339(started),
@@ -163,64 +164,18 @@ pub fn run_study(
     })
 }
 
-/// SEAM (analysis): per-point statistics. Switch to
-/// `crate::analysis::summary::summarize(runs, crate::theory::predict)` once it lands.
+/// Per sweep point and result: ensemble statistics beside theory.
 fn summarize(runs: &[(RunSpec, RunOutput)]) -> Vec<SummaryRow> {
-    store::basic_summary(runs, crate::theory::predict)
+    crate::analysis::summary::summarize(runs, &crate::theory::predict)
 }
 
-/// How the study ran; the fields of `report::ReportMeta`.
-struct RunInfo {
-    command: String,
-    threads: usize,
-    started: String,
-    finished: String,
-    version: String,
-    total_wall_seconds: f64,
-    /// (run id, status) of runs that failed.
-    failed_runs: Vec<(u64, String)>,
-}
-
-/// SEAM (report): switch to `crate::report::write(out_dir, &loaded.descriptor,
-/// runs, summary, sections, &ReportMeta { ..info })` once it lands. Until then
-/// a plain report.md lists what was measured.
 fn write_report(
     out_dir: &Path,
     loaded: &Loaded,
     runs: &[(RunSpec, RunOutput)],
     summary: &[SummaryRow],
     sections: &[crate::analysis::ReportSection],
-    info: &RunInfo,
+    meta: &ReportMeta,
 ) -> anyhow::Result<()> {
-    use std::fmt::Write;
-    let d = &loaded.descriptor;
-    let mut md = format!(
-        "# {}\n\n{}\n\n{} successful runs, {} failed; {:.1} s of run time on {} threads.\n\n`{}` (bonkers {}, {} to {})\n\n",
-        d.study.name,
-        d.study.description,
-        runs.len(),
-        info.failed_runs.len(),
-        info.total_wall_seconds,
-        info.threads,
-        info.command,
-        info.version,
-        info.started,
-        info.finished
-    );
-    md.push_str("| point | result | n | mean | stderr | theory |\n|---|---|---|---|---|---|\n");
-    for r in summary {
-        let theory = r.theory.map_or("—".to_string(), |t| format!("{t:.6}"));
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {:.6} | {:.2e} | {theory} |",
-            r.point_id, r.result, r.n, r.mean, r.stderr
-        );
-    }
-    for (id, status) in &info.failed_runs {
-        let _ = writeln!(md, "\nrun {id}: {status}");
-    }
-    for s in sections {
-        let _ = write!(md, "\n## {}\n\n{}\n", s.title, s.markdown);
-    }
-    store::write_atomic(&out_dir.join("report.md"), md.as_bytes())
+    crate::report::write(out_dir, &loaded.descriptor, runs, summary, sections, meta)
 }

@@ -1,7 +1,6 @@
 //! Tidy Parquet tables of a study (polars), each written to a temporary file
 //! and renamed, so a reader never sees half a table.
 
-use super::output::RunOutput;
 use super::plan_types::RunSpec;
 use super::record::RunRecord;
 use crate::analysis::summary_types::SummaryRow;
@@ -305,62 +304,3 @@ fn summary_table(specs: &[&RunSpec], summary: &[SummaryRow]) -> anyhow::Result<D
     DataFrame::new(summary.len(), columns).context("cannot build summary.parquet")
 }
 
-/// Minimal per-point statistics so summary.parquet exists before the analysis
-/// layer's `summarize` is wired in (see `pipeline::summarize`): mean, sample
-/// std, standard error and a 95% Student-t interval per (point, scalar).
-pub fn basic_summary(
-    runs: &[(RunSpec, RunOutput)],
-    theory: impl Fn(&super::descriptor_types::Descriptor, &str) -> Option<f64>,
-) -> Vec<SummaryRow> {
-    use statrs::distribution::{ContinuousCDF, StudentsT};
-    let mut groups: BTreeMap<(u64, String), Vec<&(RunSpec, RunOutput)>> = BTreeMap::new();
-    for run in runs {
-        for (name, _) in &run.1.scalars {
-            groups
-                .entry((run.0.point_id, name.clone()))
-                .or_default()
-                .push(run);
-        }
-    }
-    groups
-        .into_iter()
-        .map(|((point_id, result), members)| {
-            let xs: Vec<f64> = members
-                .iter()
-                .filter_map(|(_, o)| o.scalar(&result))
-                .collect();
-            let n = xs.len() as f64;
-            let mean = xs.iter().sum::<f64>() / n;
-            let var = if n > 1.0 {
-                xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0)
-            } else {
-                f64::NAN
-            };
-            let std = var.sqrt();
-            let stderr = std / n.sqrt();
-            let t = StudentsT::new(0.0, 1.0, (n - 1.0).max(1.0))
-                .map_or(f64::NAN, |d| d.inverse_cdf(0.975));
-            let spec = &members[0].0;
-            let theory = theory(&spec.descriptor, &result);
-            SummaryRow {
-                point_id,
-                params: spec
-                    .params
-                    .iter()
-                    .map(|(k, v)| (k.clone(), as_f64(v).unwrap_or(f64::NAN)))
-                    .collect(),
-                n: xs.len() as u64,
-                mean,
-                std,
-                stderr,
-                ci_low: mean - t * stderr,
-                ci_high: mean + t * stderr,
-                z: theory.map(|th| (mean - th) / stderr),
-                theory,
-                seconds: members.iter().map(|(_, o)| o.wall_seconds).sum(),
-                collisions: members.iter().map(|(_, o)| o.collisions).sum(),
-                result,
-            }
-        })
-        .collect()
-}

@@ -2,7 +2,7 @@
 //! names its key path so the caller can point at it in the source.
 
 use super::descriptor_types::{Descriptor, Scale, SweepMode, SweepValues};
-use crate::scene::spec::{Mass, Placement, SceneSpec, Velocities};
+use crate::scene::spec::{Mass, SceneSpec, Velocities};
 
 /// One problem: the key it concerns, what is wrong, what would be right.
 #[derive(Debug, Clone, PartialEq)]
@@ -27,6 +27,15 @@ fn positive(key: &str, v: f64) -> Check {
         Ok(())
     } else {
         bad(key, format!("must be a positive number, got {v}"), None)
+    }
+}
+
+/// Radii may be 0: point particles (an ideal gas, or MacKay's point rods).
+fn non_negative(key: &str, v: f64) -> Check {
+    if v.is_finite() && v >= 0.0 {
+        Ok(())
+    } else {
+        bad(key, format!("must be a number >= 0, got {v}"), None)
     }
 }
 
@@ -138,7 +147,7 @@ fn scene(s: &SceneSpec) -> Check {
                 Some("give each species its own name"),
             );
         }
-        positive(&key("radius"), sp.radius)?;
+        non_negative(&key("radius"), sp.radius)?;
         match sp.mass {
             Mass::Fixed(m) => positive(&key("mass"), m)?,
             Mass::Range([lo, hi]) => {
@@ -173,17 +182,6 @@ fn scene(s: &SceneSpec) -> Check {
             }
         }
     }
-    if let Some(Placement::Compress {
-        packing_fraction: phi,
-    }) = &s.placement
-        && !(*phi > 0.0 && *phi < 1.0)
-    {
-        return bad(
-            "scene.placement.packing_fraction",
-            format!("must be between 0 and 1, got {phi}"),
-            None,
-        );
-    }
     match &s.velocities {
         Some(Velocities::Maxwell {
             temperature,
@@ -205,7 +203,7 @@ fn scene(s: &SceneSpec) -> Check {
     }
     if let Some(p) = &s.piston {
         positive("scene.piston.mass", p.mass)?;
-        positive("scene.piston.radius", p.radius)?;
+        non_negative("scene.piston.radius", p.radius)?;
         if !(p.position > 0.0 && p.position < 1.0) {
             return bad(
                 "scene.piston.position",

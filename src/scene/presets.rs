@@ -1,0 +1,168 @@
+//! The seeds' scenes, bundled and runnable by name (`preset = "..."` in
+//! `[scene]`, see `study list`). Each is plain descriptor TOML, so a preset is
+//! exactly what a user could have written.
+
+use super::spec::SceneSpec;
+
+pub struct Preset {
+    pub name: &'static str,
+    pub about: &'static str,
+    pub toml: &'static str,
+}
+
+const PRESETS: &[Preset] = &[
+    Preset {
+        name: "mackay-ten",
+        about: "MacKay: ten rods, masses ~1 on the left and ~4 on the right, between walls",
+        toml: r#"
+dimension = 1
+box = [11.0]
+boundary = ["walls"]
+species = [
+  { name = "light", count = 5, mass = [0.9, 1.1], radius = 0.0, region = { from = [0.0], to = [0.5] } },
+  { name = "heavy", count = 5, mass = [3.6, 4.4], radius = 0.0, region = { from = [0.5], to = [1.0] } },
+]
+placement = { kind = "lattice" }
+velocities = { kind = "maxwell", temperature = 1.0 }
+"#,
+    },
+    Preset {
+        name: "mackay-piston",
+        about: "MacKay: five light and five heavier rods either side of a piston of mass 40, all with equal velocities",
+        toml: r#"
+dimension = 1
+box = [12.0]
+boundary = ["walls"]
+species = [
+  { name = "light", count = 5, mass = [0.9, 1.1], radius = 0.0, region = { from = [0.0], to = [0.5] } },
+  { name = "heavy", count = 5, mass = [1.5, 1.7], radius = 0.0, region = { from = [0.5], to = [1.0] } },
+]
+placement = { kind = "lattice" }
+velocities = { kind = "equal", velocity = [1.0] }
+piston = { mass = 40.0, position = 0.5, radius = 0.0 }
+"#,
+    },
+    Preset {
+        name: "mackay-cradle",
+        about: "MacKay: masses 4 and 9 then seven 1s, all the energy in the left two",
+        toml: r#"
+dimension = 1
+box = [35.0]
+boundary = ["walls"]
+species = [
+  { name = "m4", count = 1, mass = 4.123, radius = 0.0 },
+  { name = "m9", count = 1, mass = 9.0123, radius = 0.0 },
+  { name = "ones", count = 7, mass = 1.0, radius = 0.0 },
+]
+placement = { kind = "explicit", positions = [[14.0], [15.0], [16.0], [17.0], [18.0], [19.0], [20.0], [21.0], [22.0]] }
+velocities = { kind = "explicit", velocities = [[-2.0], [-2.0], [0.0], [0.0], [0.0], [0.0], [0.0], [0.0], [0.0]] }
+"#,
+    },
+    Preset {
+        name: "imperial-box",
+        about: "Imperial: four disks heading for the four walls",
+        toml: r#"
+dimension = 2
+box = [100.0, 100.0]
+boundary = ["walls", "walls"]
+species = [{ name = "disk", count = 4, mass = 1.0, radius = 1.0 }]
+placement = { kind = "explicit", positions = [[10.0, 50.0], [50.0, 90.0], [50.0, 10.0], [90.0, 50.0]] }
+velocities = { kind = "explicit", velocities = [[-1.0, 0.0], [0.0, 1.0], [0.0, -1.0], [1.0, 0.0]] }
+"#,
+    },
+    Preset {
+        name: "imperial-collision-1d",
+        about: "Imperial: one disk hits another at rest along the x axis",
+        toml: r#"
+dimension = 2
+box = [100.0, 100.0]
+boundary = ["walls", "walls"]
+species = [{ name = "disk", count = 2, mass = 1.0, radius = 1.0 }]
+placement = { kind = "explicit", positions = [[10.0, 10.0], [20.0, 10.0]] }
+velocities = { kind = "explicit", velocities = [[1.0, 0.0], [0.0, 0.0]] }
+"#,
+    },
+    Preset {
+        name: "imperial-collision-2d",
+        about: "Imperial: one disk hits another at rest on a diagonal",
+        toml: r#"
+dimension = 2
+box = [100.0, 100.0]
+boundary = ["walls", "walls"]
+species = [{ name = "disk", count = 2, mass = 1.0, radius = 1.0 }]
+placement = { kind = "explicit", positions = [[10.0, 10.0], [20.0, 15.0]] }
+velocities = { kind = "explicit", velocities = [[1.0, 0.5], [0.0, 0.0]] }
+"#,
+    },
+    Preset {
+        name: "imperial-sticking",
+        about: "Imperial: the five-disk case that traps disks together in a time-stepping code (equal masses)",
+        toml: r#"
+dimension = 2
+box = [100.0, 100.0]
+boundary = ["walls", "walls"]
+species = [{ name = "disk", count = 5, mass = 1.0, radius = 3.0 }]
+placement = { kind = "explicit", positions = [[45.0, 50.0], [55.0, 60.0], [35.0, 39.75], [65.0, 70.25], [54.0, 30.0]] }
+velocities = { kind = "explicit", velocities = [[1.0, 1.0], [0.0, 0.0], [2.0, 2.0], [-1.0, -1.0], [0.5, 2.5]] }
+"#,
+    },
+    Preset {
+        name: "imperial-sticking-masses",
+        about: "Imperial: the five-disk sticking case with masses 3, 2, 1, 4, 5 (momenta as in the seed)",
+        toml: r#"
+dimension = 2
+box = [100.0, 100.0]
+boundary = ["walls", "walls"]
+species = [
+  { name = "m3", count = 1, mass = 3.0, radius = 3.0 },
+  { name = "m2", count = 1, mass = 2.0, radius = 3.0 },
+  { name = "m1", count = 1, mass = 1.0, radius = 3.0 },
+  { name = "m4", count = 1, mass = 4.0, radius = 3.0 },
+  { name = "m5", count = 1, mass = 5.0, radius = 3.0 },
+]
+placement = { kind = "explicit", positions = [[45.0, 50.0], [55.0, 60.0], [35.0, 39.75], [65.0, 70.25], [54.0, 30.0]] }
+velocities = { kind = "explicit", velocities = [[0.3333333333333333, 0.3333333333333333], [0.0, 0.0], [2.0, 2.0], [-0.25, -0.25], [0.1, 0.5]] }
+"#,
+    },
+    Preset {
+        name: "imperial-200",
+        about: "Imperial: 200 disks of radius 1 in a box of 100, momenta (0.5, 0.5)",
+        toml: r#"
+dimension = 2
+box = [100.0, 100.0]
+boundary = ["walls", "walls"]
+species = [{ name = "disk", count = 200, mass = 1.0, radius = 1.0 }]
+placement = { kind = "random" }
+velocities = { kind = "equal", velocity = [0.5, 0.5] }
+"#,
+    },
+];
+
+pub fn list() -> &'static [Preset] {
+    PRESETS
+}
+
+/// The preset's scene, or None for an unknown name.
+pub fn find(name: &str) -> Option<SceneSpec> {
+    let preset = PRESETS.iter().find(|p| p.name == name)?;
+    // Bundled presets are tested to parse (see the tests below).
+    toml::from_str(preset.toml).ok()
+}
+
+/// Names, for "did you mean" and error messages.
+pub fn names() -> Vec<&'static str> {
+    PRESETS.iter().map(|p| p.name).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_preset_parses() {
+        for p in list() {
+            let parsed: Result<SceneSpec, _> = toml::from_str(p.toml);
+            assert!(parsed.is_ok(), "{}: {:?}", p.name, parsed.err());
+        }
+    }
+}
