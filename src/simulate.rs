@@ -22,7 +22,10 @@ pub fn run(spec: &RunSpec) -> anyhow::Result<RunOutput> {
     }
 }
 
-fn run_in<const D: usize, N: Neighbourhood<D>>(spec: &RunSpec, scene: &scene::spec::SceneSpec) -> anyhow::Result<RunOutput> {
+fn run_in<const D: usize, N: Neighbourhood<D>>(
+    spec: &RunSpec,
+    scene: &scene::spec::SceneSpec,
+) -> anyhow::Result<RunOutput> {
     let started = Instant::now();
     let d = &spec.descriptor;
     // One stream per run: the scene draws from it first, then the engine's
@@ -43,8 +46,13 @@ fn run_in<const D: usize, N: Neighbourhood<D>>(spec: &RunSpec, scene: &scene::sp
     )
     .map_err(|e| anyhow!("observe: {e}"))?;
     let engine_seed = rand::RngExt::random::<u64>(&mut rng);
-    let mut sim: Simulation<D, N, ObserverSet<D>> =
-        Simulation::new(built.particles.clone(), built.sim_box, observers, engine_seed).context("the scene cannot be simulated")?;
+    let mut sim: Simulation<D, N, ObserverSet<D>> = Simulation::new(
+        built.particles.clone(),
+        built.sim_box,
+        observers,
+        engine_seed,
+    )
+    .context("the scene cannot be simulated")?;
 
     let equilibrate = d.run.equilibrate;
     if equilibrate > 0.0 {
@@ -62,7 +70,11 @@ fn run_in<const D: usize, N: Neighbourhood<D>>(spec: &RunSpec, scene: &scene::sp
     sim.run(stop);
     let duration = sim.time() - start;
 
-    let mut out = RunOutput { events: sim.counts.events, collisions: sim.counts.collisions, ..Default::default() };
+    let mut out = RunOutput {
+        events: sim.counts.events,
+        collisions: sim.counts.collisions,
+        ..Default::default()
+    };
     let movable = sim.particles().iter().filter(|p| !p.is_immovable()).count() as f64;
     let sim_box = *sim.sim_box();
     let volume = sim_box.volume();
@@ -71,7 +83,10 @@ fn run_in<const D: usize, N: Neighbourhood<D>>(spec: &RunSpec, scene: &scene::sp
         piston: built.piston,
         duration,
         volume,
-        wall_area: (0..D).filter(|&k| !sim_box.axes[k].is_periodic()).map(|k| 2.0 * volume / sim_box.size[k]).sum(),
+        wall_area: (0..D)
+            .filter(|&k| !sim_box.axes[k].is_periodic())
+            .map(|k| 2.0 * volume / sim_box.size[k])
+            .sum(),
         dimension: D,
         degrees_of_freedom: D as f64 * (movable - if sim_box.all_periodic() { 1.0 } else { 0.0 }),
     };
@@ -79,9 +94,32 @@ fn run_in<const D: usize, N: Neighbourhood<D>>(spec: &RunSpec, scene: &scene::sp
     let thermal = sim_box.has_thermal_walls();
     sim.into_observer().finish(&ctx, &mut out);
     if !thermal {
-        out.scalars.push(("energy_drift".into(), (energy1 - energy0).abs() / energy0.max(f64::MIN_POSITIVE)));
+        out.scalars.push((
+            "energy_drift".into(),
+            (energy1 - energy0).abs() / energy0.max(f64::MIN_POSITIVE),
+        ));
     }
     analysis::per_run::<D>(d, &built, &ctx, &mut out).map_err(|e| anyhow!("analysis: {e}"))?;
+    for series in &mut out.series {
+        thin(series);
+    }
     out.wall_seconds = started.elapsed().as_secs_f64();
     Ok(out)
+}
+
+/// Most points kept per stored series. Analyses above saw every sample; the
+/// stored table keeps an evenly strided subset so that long, finely sampled
+/// runs do not swamp `series.parquet` (the sampling interval sets the
+/// analyses' resolution, this only the plots').
+pub const MAX_STORED_POINTS: usize = 4000;
+
+fn thin(series: &mut crate::study::output::Series) {
+    let n = series.t.len();
+    if n <= MAX_STORED_POINTS {
+        return;
+    }
+    let stride = n.div_ceil(MAX_STORED_POINTS);
+    let keep = |v: &[f64]| v.iter().step_by(stride).copied().collect::<Vec<f64>>();
+    series.t = keep(&series.t);
+    series.value = keep(&series.value);
 }

@@ -332,17 +332,37 @@ fn overlapping_or_outside_particles_are_refused_with_a_reason() {
 #[test]
 fn point_rods_never_pass_each_other() {
     let mut rng = common::rng(8);
-    let mut particles: Vec<Particle<1>> =
-        (0..5).map(|i| Particle::new([0.6 + 1.2 * i as f64], [1.0], 0.9 + 0.2 * rand::RngExt::random::<f64>(&mut rng), 0.0)).collect();
+    let mut particles: Vec<Particle<1>> = (0..5)
+        .map(|i| {
+            Particle::new(
+                [0.6 + 1.2 * i as f64],
+                [1.0],
+                0.9 + 0.2 * rand::RngExt::random::<f64>(&mut rng),
+                0.0,
+            )
+        })
+        .collect();
     particles.push(Particle::new([6.0], [1.0], 40.0, 0.0));
-    particles.extend((0..5).map(|i| Particle::new([6.6 + 1.2 * i as f64], [1.0], 1.5 + 0.2 * rand::RngExt::random::<f64>(&mut rng), 0.0)));
+    particles.extend((0..5).map(|i| {
+        Particle::new(
+            [6.6 + 1.2 * i as f64],
+            [1.0],
+            1.5 + 0.2 * rand::RngExt::random::<f64>(&mut rng),
+            0.0,
+        )
+    }));
     let mut sim = Rods::new(particles, SimBox::hard([12.0]), (), 1).unwrap();
     let e0 = sim.kinetic_energy();
     for k in 1..=2000 {
         sim.run(Stop::Time(k as f64));
         let snap = sim.snapshot();
-        let x: Vec<f64> = (0..snap.particles.len()).map(|i| snap.position(i)[0]).collect();
-        assert!(x.windows(2).all(|w| w[1] - w[0] >= -1e-9), "order broken at t = {k}: {x:?}");
+        let x: Vec<f64> = (0..snap.particles.len())
+            .map(|i| snap.position(i)[0])
+            .collect();
+        assert!(
+            x.windows(2).all(|w| w[1] - w[0] >= -1e-9),
+            "order broken at t = {k}: {x:?}"
+        );
     }
     assert!(sim.counts.collisions > 10_000);
     assert!(relative_drift(e0, sim.kinetic_energy()) < 1e-12);

@@ -44,11 +44,21 @@ pub fn requirements(d: &Descriptor) -> Needs {
 }
 
 /// Per-run scalars from the named analyses.
-pub fn per_run<const D: usize>(d: &Descriptor, built: &Built<D>, ctx: &Context, out: &mut RunOutput) -> Result<(), String> {
+pub fn per_run<const D: usize>(
+    d: &Descriptor,
+    built: &Built<D>,
+    ctx: &Context,
+    out: &mut RunOutput,
+) -> Result<(), String> {
     for name in d.analysis.keys() {
         match name.as_str() {
             "piston" => piston::per_run(d, built, ctx, out)?,
-            other => return Err(format!("unknown analysis `{other}`; known: {}", KNOWN.join(", "))),
+            other => {
+                return Err(format!(
+                    "unknown analysis `{other}`; known: {}",
+                    KNOWN.join(", ")
+                ));
+            }
         }
     }
     Ok(())
@@ -64,7 +74,11 @@ pub fn theory(d: &Descriptor, result: &str) -> Option<f64> {
 
 /// Sections contributed by the analyses the descriptor names under `[analysis]`.
 /// Figures are written into `out_dir`.
-pub fn sections(descriptor: &Descriptor, runs: &[(RunSpec, RunOutput)], out_dir: &Path) -> anyhow::Result<Vec<ReportSection>> {
+pub fn sections(
+    descriptor: &Descriptor,
+    runs: &[(RunSpec, RunOutput)],
+    out_dir: &Path,
+) -> anyhow::Result<Vec<ReportSection>> {
     let mut out = Vec::new();
     if descriptor.analysis.contains_key("piston") {
         out.push(piston::section(descriptor, runs, out_dir)?);

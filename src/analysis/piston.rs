@@ -12,10 +12,18 @@ use crate::study::plan_types::RunSpec;
 use crate::theory::piston::{Gas, Law, PistonSystem};
 use std::f64::consts::{E, TAU};
 
-pub const SERIES: &[&str] = &["piston_position", "kinetic_energy_by_species", "kinetic_energy"];
+pub const SERIES: &[&str] = &[
+    "piston_position",
+    "kinetic_energy_by_species",
+    "kinetic_energy",
+];
 
 fn option(d: &Descriptor, key: &str, default: f64) -> f64 {
-    d.analysis.get("piston").and_then(|t| t.get(key)).and_then(|v| v.as_float().or(v.as_integer().map(|i| i as f64))).unwrap_or(default)
+    d.analysis
+        .get("piston")
+        .and_then(|t| t.get(key))
+        .and_then(|v| v.as_float().or(v.as_integer().map(|i| i as f64)))
+        .unwrap_or(default)
 }
 
 /// The theory's view of a 1D scene at its start.
@@ -24,7 +32,10 @@ pub fn system<const D: usize>(built: &Built<D>) -> Option<PistonSystem> {
     let ps: &[Particle<D>] = &built.particles;
     let piston = ps[p];
     let gas = |range: &[Particle<D>]| -> (f64, f64) {
-        (range.iter().map(Particle::kinetic_energy).sum(), range.iter().map(|q| 2.0 * q.radius).sum())
+        (
+            range.iter().map(Particle::kinetic_energy).sum(),
+            range.iter().map(|q| 2.0 * q.radius).sum(),
+        )
     };
     let (el, occupied_l) = gas(&ps[..p]);
     let (er, occupied_r) = gas(&ps[p + 1..]);
@@ -34,38 +45,63 @@ pub fn system<const D: usize>(built: &Built<D>) -> Option<PistonSystem> {
         mass: piston.mass(),
         x0: x,
         v0: piston.vel[0],
-        left: Gas { energy: el, free_length: x - piston.radius - occupied_l },
-        right: Gas { energy: er, free_length: built.sim_box.size[0] - x - piston.radius - occupied_r },
+        left: Gas {
+            energy: el,
+            free_length: x - piston.radius - occupied_l,
+        },
+        right: Gas {
+            energy: er,
+            free_length: built.sim_box.size[0] - x - piston.radius - occupied_r,
+        },
     })
 }
 
 /// Scalars of one run (see the report section for what each means).
-pub fn per_run<const D: usize>(d: &Descriptor, built: &Built<D>, ctx: &Context, out: &mut RunOutput) -> Result<(), String> {
+pub fn per_run<const D: usize>(
+    d: &Descriptor,
+    built: &Built<D>,
+    ctx: &Context,
+    out: &mut RunOutput,
+) -> Result<(), String> {
     let sys = system(built).ok_or("the piston analysis needs a scene with a piston")?;
     let omega_ad = sys.omega(Law::Adiabatic);
     let omega_iso = sys.omega(Law::Isothermal);
     let find = |name: &str| out.series.iter().find(|s| s.observable == name).cloned();
-    let x = find("piston_position").ok_or("piston_position was not sampled: set [run] sample_every")?;
+    let x =
+        find("piston_position").ok_or("piston_position was not sampled: set [run] sample_every")?;
     let ep = find("kinetic_energy.piston").ok_or("piston energy was not sampled")?;
     let total = find("kinetic_energy").ok_or("kinetic energy was not sampled")?;
     let period = TAU / omega_ad;
-    let frequency = zero_crossing_omega(&x, x.t.first().copied().unwrap_or(0.0) + option(d, "window_periods", 4.0) * period);
+    let frequency = zero_crossing_omega(
+        &x,
+        x.t.first().copied().unwrap_or(0.0) + option(d, "window_periods", 4.0) * period,
+    );
     let n_free = ctx.degrees_of_freedom;
     let energy = total.value.first().copied().unwrap_or(f64::NAN);
     let late = option(d, "late_fraction", 0.5);
     let scalars = [
         ("frequency", frequency),
         ("omega_adiabatic", omega_ad),
-        ("omega_adiabatic_small", sys.small_oscillation_omega(Law::Adiabatic)),
+        (
+            "omega_adiabatic_small",
+            sys.small_oscillation_omega(Law::Adiabatic),
+        ),
         ("omega_isothermal", omega_iso),
         ("frequency_ratio", frequency / omega_ad),
         ("frequency_ratio_isothermal", frequency / omega_iso),
-        ("initial_piston_share", ep.value.first().copied().unwrap_or(f64::NAN) / energy),
-        ("relaxation_time", relaxation_time(&ep, energy / n_free, period)),
+        (
+            "initial_piston_share",
+            ep.value.first().copied().unwrap_or(f64::NAN) / energy,
+        ),
+        (
+            "relaxation_time",
+            relaxation_time(&ep, energy / n_free, period),
+        ),
         ("piston_share", late_share(&ep, &total, late)),
         ("mass_ratio", sys.mass),
     ];
-    out.scalars.extend(scalars.iter().map(|(k, v)| (k.to_string(), *v)));
+    out.scalars
+        .extend(scalars.iter().map(|(k, v)| (k.to_string(), *v)));
     Ok(())
 }
 
@@ -102,7 +138,10 @@ pub fn relaxation_time(ep: &Series, equipartition: f64, period: f64) -> f64 {
     let t0 = ep.t[0];
     let mut start = 0;
     while start < ep.t.len() {
-        let end = ep.t[start..].iter().position(|&t| t >= ep.t[start] + period).map_or(ep.t.len(), |k| start + k);
+        let end = ep.t[start..]
+            .iter()
+            .position(|&t| t >= ep.t[start] + period)
+            .map_or(ep.t.len(), |k| start + k);
         if end == ep.t.len() {
             break;
         }
@@ -121,7 +160,11 @@ pub fn late_share(ep: &Series, total: &Series, fraction: f64) -> f64 {
     let n = ep.value.len();
     let from = ((1.0 - fraction.clamp(0.0, 1.0)) * n as f64) as usize;
     let shares: Vec<f64> = (from..n).map(|k| ep.value[k] / total.value[k]).collect();
-    if shares.is_empty() { f64::NAN } else { shares.iter().sum::<f64>() / shares.len() as f64 }
+    if shares.is_empty() {
+        f64::NAN
+    } else {
+        shares.iter().sum::<f64>() / shares.len() as f64
+    }
 }
 
 /// Equipartition: the piston's share of kinetic energy is one over the free
@@ -131,7 +174,11 @@ pub fn theory(d: &Descriptor, result: &str) -> Option<f64> {
     let piston = scene.piston.as_ref()?;
     match result {
         "piston_share" => {
-            let gas: usize = scene.species.iter().map(|s| piston.per_side.unwrap_or(s.count)).sum();
+            let gas: usize = scene
+                .species
+                .iter()
+                .map(|s| piston.per_side.unwrap_or(s.count))
+                .sum();
             let dim = scene.dimension.unwrap_or(1);
             Some(1.0 / (dim * (gas + 1)) as f64)
         }
@@ -141,7 +188,11 @@ pub fn theory(d: &Descriptor, result: &str) -> Option<f64> {
 }
 
 /// MacKay's pictures for his own case, and how to read the piston results.
-pub fn section(d: &Descriptor, runs: &[(RunSpec, RunOutput)], out_dir: &std::path::Path) -> anyhow::Result<ReportSection> {
+pub fn section(
+    d: &Descriptor,
+    runs: &[(RunSpec, RunOutput)],
+    out_dir: &std::path::Path,
+) -> anyhow::Result<ReportSection> {
     let mut figures = Vec::new();
     let mackay = super::piston_pictures::mackay_case(d.study.seed, out_dir, &mut figures)?;
     let mut md = String::new();
@@ -164,5 +215,9 @@ pub fn section(d: &Descriptor, runs: &[(RunSpec, RunOutput)], out_dir: &std::pat
          velocity-dependent imbalance of those hits (a friction of order the gas density times its thermal \
          speed), so the relaxation time grows in proportion to M.\n",
     );
-    Ok(ReportSection { title: "Piston: oscillation and dissipation".into(), markdown: md, figures })
+    Ok(ReportSection {
+        title: "Piston: oscillation and dissipation".into(),
+        markdown: md,
+        figures,
+    })
 }

@@ -68,7 +68,12 @@ pub fn contact_time<const D: usize>(r: &Vector<D>, v: &Vector<D>, sigma: f64) ->
 /// put two point rods a hair past each other. Time until contact, or None if
 /// they are not closing.
 #[inline(always)]
-pub fn line_contact_time(gap_vector: f64, closing_velocity: f64, dir: f64, sigma: f64) -> Option<f64> {
+pub fn line_contact_time(
+    gap_vector: f64,
+    closing_velocity: f64,
+    dir: f64,
+    sigma: f64,
+) -> Option<f64> {
     let closing = dir * closing_velocity;
     if closing <= 0.0 {
         return None;

@@ -434,5 +434,9 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
 /// (image codes: 0 one box left, 1 none, 2 one box right).
 #[inline(always)]
 fn line_side(i: usize, j: usize, image: Image) -> f64 {
-    if image == 2 || (image == 1 && j > i) { 1.0 } else { -1.0 }
+    if image == 2 || (image == 1 && j > i) {
+        1.0
+    } else {
+        -1.0
+    }
 }

@@ -14,7 +14,9 @@ pub struct ScaledVelocity {
 
 impl Default for ScaledVelocity {
     fn default() -> Self {
-        ScaledVelocity { counts: vec![0.0; BINS] }
+        ScaledVelocity {
+            counts: vec![0.0; BINS],
+        }
     }
 }
 
@@ -39,7 +41,9 @@ impl<const D: usize> Measure<D> for ScaledVelocity {
         out.histograms.push(Histogram {
             observable: "scaled_velocity_x".into(),
             lo: (0..BINS).map(|b| -HALF_WIDTH + b as f64 * w).collect(),
-            hi: (0..BINS).map(|b| -HALF_WIDTH + (b + 1) as f64 * w).collect(),
+            hi: (0..BINS)
+                .map(|b| -HALF_WIDTH + (b + 1) as f64 * w)
+                .collect(),
             count: self.counts,
         });
     }

@@ -53,7 +53,11 @@ pub struct ObserverSet<const D: usize> {
 
 impl<const D: usize> ObserverSet<D> {
     pub fn new(measures: Vec<Box<dyn Measure<D>>>) -> Self {
-        let pick = |f: &dyn Fn(&dyn Measure<D>) -> bool| (0..measures.len()).filter(|&i| f(measures[i].as_ref())).collect();
+        let pick = |f: &dyn Fn(&dyn Measure<D>) -> bool| {
+            (0..measures.len())
+                .filter(|&i| f(measures[i].as_ref()))
+                .collect()
+        };
         ObserverSet {
             on_collision: pick(&|m| m.uses_collisions()),
             on_wall: pick(&|m| m.uses_walls()),
@@ -97,15 +101,47 @@ impl<const D: usize> Observer<D> for ObserverSet<D> {
 /// Every observable name a descriptor may use, with what it gives.
 pub const CATALOGUE: &[(&str, &str, &str)] = &[
     ("series", "kinetic_energy", "total kinetic energy"),
-    ("series", "kinetic_energy_by_species", "kinetic energy of each species (kinetic_energy.<name>)"),
-    ("series", "temperature", "kT from kinetic energy over the free degrees of freedom"),
+    (
+        "series",
+        "kinetic_energy_by_species",
+        "kinetic energy of each species (kinetic_energy.<name>)",
+    ),
+    (
+        "series",
+        "temperature",
+        "kT from kinetic energy over the free degrees of freedom",
+    ),
     ("series", "piston_position", "position of the piston"),
-    ("series", "positions", "x coordinate of every particle (x.<index>), for space-time diagrams"),
-    ("series", "left_fraction", "fraction of particles in the left half of the box"),
-    ("scalars", "wall_pressure", "time-averaged force per unit wall area (with walls)"),
-    ("scalars", "virial_pressure", "pressure from the collision virial (any boundary)"),
-    ("scalars", "temperature", "time-averaged kT (needs sampling)"),
-    ("histograms", "scaled_velocity_x", "sqrt(m) v_x of every particle at every sample, in units of sqrt(kT)"),
+    (
+        "series",
+        "positions",
+        "x coordinate of every particle (x.<index>), for space-time diagrams",
+    ),
+    (
+        "series",
+        "left_fraction",
+        "fraction of particles in the left half of the box",
+    ),
+    (
+        "scalars",
+        "wall_pressure",
+        "time-averaged force per unit wall area (with walls)",
+    ),
+    (
+        "scalars",
+        "virial_pressure",
+        "pressure from the collision virial (any boundary)",
+    ),
+    (
+        "scalars",
+        "temperature",
+        "time-averaged kT (needs sampling)",
+    ),
+    (
+        "histograms",
+        "scaled_velocity_x",
+        "sqrt(m) v_x of every particle at every sample, in units of sqrt(kT)",
+    ),
 ];
 
 /// Build the observers for the named observables.
@@ -119,8 +155,15 @@ pub fn build<const D: usize>(
         if CATALOGUE.iter().any(|(k, n, _)| *k == kind && n == name) {
             Ok(())
         } else {
-            let known: Vec<&str> = CATALOGUE.iter().filter(|(k, _, _)| *k == kind).map(|(_, n, _)| *n).collect();
-            Err(format!("unknown {kind} observable `{name}`; known: {}", known.join(", ")))
+            let known: Vec<&str> = CATALOGUE
+                .iter()
+                .filter(|(k, _, _)| *k == kind)
+                .map(|(_, n, _)| *n)
+                .collect();
+            Err(format!(
+                "unknown {kind} observable `{name}`; known: {}",
+                known.join(", ")
+            ))
         }
     };
     let mut measures: Vec<Box<dyn Measure<D>>> = Vec::new();

@@ -23,7 +23,10 @@ impl<const D: usize> Measure<D> for WallPressure {
         true
     }
     fn finish(self: Box<Self>, ctx: &Context, out: &mut RunOutput) {
-        out.scalars.push(("wall_pressure".into(), self.impulse / (ctx.duration * ctx.wall_area)));
+        out.scalars.push((
+            "wall_pressure".into(),
+            self.impulse / (ctx.duration * ctx.wall_area),
+        ));
     }
 }
 
@@ -36,14 +39,20 @@ pub struct VirialPressure<const D: usize> {
 
 impl<const D: usize> Default for VirialPressure<D> {
     fn default() -> Self {
-        VirialPressure { virial: 0.0, kinetic_sum: 0.0, samples: 0 }
+        VirialPressure {
+            virial: 0.0,
+            kinetic_sum: 0.0,
+            samples: 0,
+        }
     }
 }
 
 impl<const D: usize> Observer<D> for VirialPressure<D> {
     fn pair_collision(&mut self, e: &PairCollision<D>) {
         // r_ij = r_i - r_j = -separation; dp_i points away from j.
-        self.virial -= (0..D).map(|k| e.separation[k] * e.impulse_i[k]).sum::<f64>();
+        self.virial -= (0..D)
+            .map(|k| e.separation[k] * e.impulse_i[k])
+            .sum::<f64>();
     }
     fn sample(&mut self, s: &Snapshot<D>) {
         self.kinetic_sum += s.kinetic_energy();
@@ -60,7 +69,11 @@ impl<const D: usize> Measure<D> for VirialPressure<D> {
     }
     fn finish(self: Box<Self>, ctx: &Context, out: &mut RunOutput) {
         let d = D as f64;
-        let kinetic = if self.samples > 0 { self.kinetic_sum / self.samples as f64 } else { f64::NAN };
+        let kinetic = if self.samples > 0 {
+            self.kinetic_sum / self.samples as f64
+        } else {
+            f64::NAN
+        };
         let p = (2.0 * kinetic / d + self.virial / (d * ctx.duration)) / ctx.volume;
         out.scalars.push(("virial_pressure".into(), p));
     }

@@ -17,7 +17,13 @@ pub struct Sampled {
 
 impl Sampled {
     pub fn new(names: Vec<String>, piston: Option<usize>) -> Self {
-        Sampled { names, t: Vec::new(), columns: Vec::new(), dof: None, piston }
+        Sampled {
+            names,
+            t: Vec::new(),
+            columns: Vec::new(),
+            dof: None,
+            piston,
+        }
     }
 
     fn push(&mut self, k: &mut usize, name: impl FnOnce() -> String, value: f64) {
@@ -37,14 +43,21 @@ impl<const D: usize> Observer<D> for Sampled {
         let kinetic = s.kinetic_energy();
         // Free degrees of freedom: d N, or d (N - 1) if momentum is conserved.
         let movable = s.particles.iter().filter(|p| !p.is_immovable()).count() as f64;
-        let dof = *self.dof.get_or_insert(D as f64 * (movable - if s.sim_box.all_periodic() { 1.0 } else { 0.0 }));
+        let dof = *self
+            .dof
+            .get_or_insert(D as f64 * (movable - if s.sim_box.all_periodic() { 1.0 } else { 0.0 }));
         for name in &names {
             let plain = name.strip_prefix("mean:").unwrap_or(name);
             match plain {
                 "kinetic_energy" => self.push(&mut k, || name.clone(), kinetic),
                 "temperature" => self.push(&mut k, || name.clone(), 2.0 * kinetic / dof),
                 "kinetic_energy_by_species" => {
-                    let groups = s.particles.iter().map(|p| p.species).max().map_or(0, |m| m as usize + 1);
+                    let groups = s
+                        .particles
+                        .iter()
+                        .map(|p| p.species)
+                        .max()
+                        .map_or(0, |m| m as usize + 1);
                     let mut e = vec![0.0; groups];
                     for p in s.particles {
                         e[p.species as usize] += p.kinetic_energy();
@@ -64,8 +77,14 @@ impl<const D: usize> Observer<D> for Sampled {
                 }
                 "left_fraction" => {
                     let half = 0.5 * s.sim_box.size[0];
-                    let left = (0..s.particles.len()).filter(|&i| s.position(i)[0] < half).count();
-                    self.push(&mut k, || name.clone(), left as f64 / s.particles.len().max(1) as f64);
+                    let left = (0..s.particles.len())
+                        .filter(|&i| s.position(i)[0] < half)
+                        .count();
+                    self.push(
+                        &mut k,
+                        || name.clone(),
+                        left as f64 / s.particles.len().max(1) as f64,
+                    );
                 }
                 _ => {}
             }
@@ -82,15 +101,28 @@ impl<const D: usize> Measure<D> for Sampled {
         for (name, values) in self.columns {
             if let Some(scalar) = name.strip_prefix("mean:") {
                 let mean = values.iter().sum::<f64>() / values.len().max(1) as f64;
-                out.scalars.push((scalar.to_string(), if values.is_empty() { f64::NAN } else { mean }));
+                out.scalars.push((
+                    scalar.to_string(),
+                    if values.is_empty() { f64::NAN } else { mean },
+                ));
                 continue;
             }
             // Species energies are named after the species.
             let observable = match name.strip_prefix("kinetic_energy#") {
-                Some(g) => format!("kinetic_energy.{}", g.parse::<usize>().ok().and_then(|g| ctx.species.get(g)).map_or(g, |s| s)),
+                Some(g) => format!(
+                    "kinetic_energy.{}",
+                    g.parse::<usize>()
+                        .ok()
+                        .and_then(|g| ctx.species.get(g))
+                        .map_or(g, |s| s)
+                ),
                 None => name,
             };
-            out.series.push(Series { observable, t: self.t.clone(), value: values });
+            out.series.push(Series {
+                observable,
+                t: self.t.clone(),
+                value: values,
+            });
         }
     }
 }

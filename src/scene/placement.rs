@@ -13,12 +13,21 @@ pub struct Slot<const D: usize> {
 
 /// Random sequential insertion with a coarse grid for the overlap test.
 /// Refuses, rather than loops forever, when the region is too full.
-pub fn random<const D: usize>(slots: &[Slot<D>], size: [f64; D], rng: &mut ChaCha8Rng) -> Result<Vec<[f64; D]>, String> {
+pub fn random<const D: usize>(
+    slots: &[Slot<D>],
+    size: [f64; D],
+    rng: &mut ChaCha8Rng,
+) -> Result<Vec<[f64; D]>, String> {
     if D == 1 {
         return random_rods(slots, rng);
     }
-    let diameter = slots.iter().map(|s| 2.0 * s.radius).fold(0.0, f64::max).max(1e-9);
-    let n: [usize; D] = std::array::from_fn(|k| ((size[k] / diameter).floor() as usize).clamp(1, 1 << 10));
+    let diameter = slots
+        .iter()
+        .map(|s| 2.0 * s.radius)
+        .fold(0.0, f64::max)
+        .max(1e-9);
+    let n: [usize; D] =
+        std::array::from_fn(|k| ((size[k] / diameter).floor() as usize).clamp(1, 1 << 10));
     let cell = |x: &[f64; D]| -> usize {
         let mut idx = 0;
         for k in (0..D).rev() {
@@ -62,7 +71,12 @@ pub fn random<const D: usize>(slots: &[Slot<D>], size: [f64; D], rng: &mut ChaCh
     Ok(placed)
 }
 
-fn neighbour_cells<const D: usize>(cell: &dyn Fn(&[f64; D]) -> usize, x: &[f64; D], d: f64, size: &[f64; D]) -> Vec<usize> {
+fn neighbour_cells<const D: usize>(
+    cell: &dyn Fn(&[f64; D]) -> usize,
+    x: &[f64; D],
+    d: f64,
+    size: &[f64; D],
+) -> Vec<usize> {
     let mut out = Vec::new();
     for offset in 0..3usize.pow(D as u32) {
         let mut rest = offset;
@@ -80,7 +94,10 @@ fn neighbour_cells<const D: usize>(cell: &dyn Fn(&[f64; D]) -> usize, x: &[f64; 
 
 /// 1D: exact uniform sampling of non-overlapping rods, region by region:
 /// sorted uniform gaps in the free length, then the rods laid in order.
-fn random_rods<const D: usize>(slots: &[Slot<D>], rng: &mut ChaCha8Rng) -> Result<Vec<[f64; D]>, String> {
+fn random_rods<const D: usize>(
+    slots: &[Slot<D>],
+    rng: &mut ChaCha8Rng,
+) -> Result<Vec<[f64; D]>, String> {
     let mut out = vec![[0.0; D]; slots.len()];
     let mut groups: Vec<(f64, f64, Vec<usize>)> = Vec::new();
     for (i, s) in slots.iter().enumerate() {
@@ -93,7 +110,10 @@ fn random_rods<const D: usize>(slots: &[Slot<D>], rng: &mut ChaCha8Rng) -> Resul
         let occupied: f64 = members.iter().map(|&i| 2.0 * slots[i].radius).sum();
         let free = hi - lo - occupied;
         if free < 0.0 {
-            return Err(format!("{} rods of total length {occupied} do not fit in [{lo}, {hi}]", members.len()));
+            return Err(format!(
+                "{} rods of total length {occupied} do not fit in [{lo}, {hi}]",
+                members.len()
+            ));
         }
         let mut u: Vec<f64> = members.iter().map(|_| free * rng.random::<f64>()).collect();
         u.sort_by(f64::total_cmp);
@@ -108,7 +128,12 @@ fn random_rods<const D: usize>(slots: &[Slot<D>], rng: &mut ChaCha8Rng) -> Resul
 
 /// Lattice sites filling the box region [lo, hi]: equal spacing in 1D;
 /// "square" or "hexagonal" in 2D; "cubic" or "fcc" in 3D.
-pub fn lattice<const D: usize>(count: usize, lo: [f64; D], hi: [f64; D], kind: Option<&str>) -> Result<Vec<[f64; D]>, String> {
+pub fn lattice<const D: usize>(
+    count: usize,
+    lo: [f64; D],
+    hi: [f64; D],
+    kind: Option<&str>,
+) -> Result<Vec<[f64; D]>, String> {
     let kind = kind.unwrap_or(match D {
         1 => "line",
         2 => "hexagonal",
@@ -119,7 +144,12 @@ pub fn lattice<const D: usize>(count: usize, lo: [f64; D], hi: [f64; D], kind: O
         (1, "line") => vec![[0.5, 0.0, 0.0]],
         (2, "square") | (3, "cubic") => vec![[0.5, 0.5, 0.5]],
         (2, "hexagonal") => vec![[0.25, 0.25, 0.0], [0.75, 0.75, 0.0]],
-        (3, "fcc") => vec![[0.25, 0.25, 0.25], [0.75, 0.75, 0.25], [0.75, 0.25, 0.75], [0.25, 0.75, 0.75]],
+        (3, "fcc") => vec![
+            [0.25, 0.25, 0.25],
+            [0.75, 0.75, 0.25],
+            [0.75, 0.25, 0.75],
+            [0.25, 0.75, 0.75],
+        ],
         _ => {
             return Err(format!(
                 "lattice `{kind}` is not available in {D}D; use {}",
@@ -133,13 +163,22 @@ pub fn lattice<const D: usize>(count: usize, lo: [f64; D], hi: [f64; D], kind: O
     };
     let extent: [f64; D] = std::array::from_fn(|k| hi[k] - lo[k]);
     // Cells per axis in proportion to the region's shape (hexagonal cells are sqrt(3) tall).
-    let aspect: [f64; D] = std::array::from_fn(|k| if D == 2 && kind == "hexagonal" && k == 1 { 3f64.sqrt() } else { 1.0 });
+    let aspect: [f64; D] = std::array::from_fn(|k| {
+        if D == 2 && kind == "hexagonal" && k == 1 {
+            3f64.sqrt()
+        } else {
+            1.0
+        }
+    });
     let cells_needed = count.div_ceil(basis.len()).max(1) as f64;
     let volume: f64 = (0..D).map(|k| extent[k] / aspect[k]).product();
     let a = (volume / cells_needed).powf(1.0 / D as f64);
-    let mut n: [usize; D] = std::array::from_fn(|k| ((extent[k] / aspect[k] / a).round() as usize).max(1));
+    let mut n: [usize; D] =
+        std::array::from_fn(|k| ((extent[k] / aspect[k] / a).round() as usize).max(1));
     while n.iter().product::<usize>() * basis.len() < count {
-        let k = (0..D).max_by(|&x, &y| (extent[x] / n[x] as f64).total_cmp(&(extent[y] / n[y] as f64))).unwrap_or(0);
+        let k = (0..D)
+            .max_by(|&x, &y| (extent[x] / n[x] as f64).total_cmp(&(extent[y] / n[y] as f64)))
+            .unwrap_or(0);
         n[k] += 1;
     }
     let mut sites = Vec::with_capacity(count);
@@ -155,7 +194,9 @@ pub fn lattice<const D: usize>(count: usize, lo: [f64; D], hi: [f64; D], kind: O
             if sites.len() == count {
                 break 'fill;
             }
-            sites.push(std::array::from_fn(|k| lo[k] + (idx[k] as f64 + b[k]) * extent[k] / n[k] as f64));
+            sites.push(std::array::from_fn(|k| {
+                lo[k] + (idx[k] as f64 + b[k]) * extent[k] / n[k] as f64
+            }));
         }
     }
     Ok(sites)

@@ -5,19 +5,32 @@ use super::presets;
 use super::spec::SceneSpec;
 
 pub fn resolve(spec: &SceneSpec) -> Result<SceneSpec, String> {
-    let Some(name) = &spec.preset else { return Ok(spec.clone()) };
+    let Some(name) = &spec.preset else {
+        return Ok(spec.clone());
+    };
     let Some(base) = presets::find(name) else {
-        return Err(format!("unknown scene preset `{name}`; bundled presets are: {}", presets::names().join(", ")));
+        return Err(format!(
+            "unknown scene preset `{name}`; bundled presets are: {}",
+            presets::names().join(", ")
+        ));
     };
     Ok(SceneSpec {
         preset: None,
         dimension: spec.dimension.or(base.dimension),
         box_size: spec.box_size.clone().or(base.box_size),
         boundary: spec.boundary.clone().or(base.boundary),
-        species: if spec.species.is_empty() { base.species } else { spec.species.clone() },
+        species: if spec.species.is_empty() {
+            base.species
+        } else {
+            spec.species.clone()
+        },
         placement: spec.placement.clone().or(base.placement),
         velocities: spec.velocities.clone().or(base.velocities),
         piston: spec.piston.clone().or(base.piston),
-        thermal_walls: if spec.thermal_walls.is_empty() { base.thermal_walls } else { spec.thermal_walls.clone() },
+        thermal_walls: if spec.thermal_walls.is_empty() {
+            base.thermal_walls
+        } else {
+            spec.thermal_walls.clone()
+        },
     })
 }

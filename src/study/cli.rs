@@ -242,5 +242,8 @@ fn description(path: &Path) -> String {
 /// SEAM (scenes): bundled scene presets as (name, one-line description);
 /// switch to `crate::scene::presets::list()` once presets exist.
 fn scene_presets() -> Vec<(String, String)> {
-    crate::scene::presets::list().iter().map(|p| (p.name.to_string(), p.about.to_string())).collect()
+    crate::scene::presets::list()
+        .iter()
+        .map(|p| (p.name.to_string(), p.about.to_string()))
+        .collect()
 }

@@ -1,7 +1,6 @@
 //! `study run` end to end: descriptor -> plan -> runs -> tables -> report -> manifest.
 //! The calls into the analysis and report layers are the two marked seams.
 
-use crate::report::ReportMeta;
 use super::descriptor::{self, Loaded};
 use super::errors::{DescriptorError, StudyError};
 use super::manifest::{Manifest, RunCounts, rfc3339, version};
@@ -13,6 +12,7 @@ use super::record::RunRecord;
 use super::runner::{RunnerOptions, SimulateFn, run_all};
 use super::store;
 use crate::analysis::summary_types::SummaryRow;
+use crate::report::ReportMeta;
 use anyhow::Context;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;

@@ -28,12 +28,21 @@ pub fn expand_values(values: &SweepValues) -> Vec<toml::Value> {
                     (0, _) => r.from,
                     (i, _) if i + 1 == r.steps => r.to,
                     (_, Scale::Linear) => r.from + (r.to - r.from) * f,
-                    (_, Scale::Log) => r.from * (r.to / r.from).powf(f),
+                    (_, Scale::Log) => significant(r.from * (r.to / r.from).powf(f)),
                 };
                 number(x)
             })
             .collect(),
     }
+}
+
+/// Round to 12 significant digits, so a log range gives 100, not 99.99999999999999.
+fn significant(x: f64) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    let scale = 10f64.powi(11 - x.abs().log10().floor() as i32);
+    (x * scale).round() / scale
 }
 
 /// Whole numbers become TOML integers so they also fit integer keys (counts);

@@ -303,4 +303,3 @@ fn summary_table(specs: &[&RunSpec], summary: &[SummaryRow]) -> anyhow::Result<D
     ));
     DataFrame::new(summary.len(), columns).context("cannot build summary.parquet")
 }
-

@@ -35,7 +35,10 @@ impl PistonSystem {
 
     /// Free lengths when the piston is at x.
     fn lengths(&self, x: f64) -> (f64, f64) {
-        (self.left.free_length + (x - self.x0), self.right.free_length - (x - self.x0))
+        (
+            self.left.free_length + (x - self.x0),
+            self.right.free_length - (x - self.x0),
+        )
     }
 
     /// The gases' potential energy for the piston at x.
@@ -47,7 +50,8 @@ impl PistonSystem {
         let a = self.exponent();
         match law {
             Law::Adiabatic => {
-                self.left.energy * (self.left.free_length / xl).powf(a) + self.right.energy * (self.right.free_length / xr).powf(a)
+                self.left.energy * (self.left.free_length / xl).powf(a)
+                    + self.right.energy * (self.right.free_length / xr).powf(a)
             }
             Law::Isothermal => -a * (self.left.energy * xl.ln() + self.right.energy * xr.ln()),
         }
@@ -58,21 +62,31 @@ impl PistonSystem {
         let (xl, xr) = self.lengths(x);
         let a = self.exponent();
         let (el, er) = match law {
-            Law::Adiabatic => (self.left.energy * (self.left.free_length / xl).powf(a), self.right.energy * (self.right.free_length / xr).powf(a)),
+            Law::Adiabatic => (
+                self.left.energy * (self.left.free_length / xl).powf(a),
+                self.right.energy * (self.right.free_length / xr).powf(a),
+            ),
             Law::Isothermal => (self.left.energy, self.right.energy),
         };
         a * el / xl - a * er / xr
     }
 
     fn limits(&self) -> (f64, f64) {
-        (self.x0 - self.left.free_length, self.x0 + self.right.free_length)
+        (
+            self.x0 - self.left.free_length,
+            self.x0 + self.right.free_length,
+        )
     }
 
     /// Angular frequency of small oscillations about the pressure balance:
     /// omega^2 = gamma P (1/X_L + 1/X_R) / M.
     pub fn small_oscillation_omega(&self, law: Law) -> f64 {
         let (lo, hi) = self.limits();
-        let x = bisect(|x| self.force(law, x), lo + 1e-12 * (hi - lo), hi - 1e-12 * (hi - lo));
+        let x = bisect(
+            |x| self.force(law, x),
+            lo + 1e-12 * (hi - lo),
+            hi - 1e-12 * (hi - lo),
+        );
         let (xl, xr) = self.lengths(x);
         let a = self.exponent();
         let gamma = match law {
@@ -94,15 +108,29 @@ impl PistonSystem {
         let energy = 0.5 * self.mass * self.v0 * self.v0 + u0;
         let (lo, hi) = self.limits();
         let excess = |x: f64| self.potential(law, x) - energy;
-        if 0.5 * self.mass * self.v0 * self.v0 <= 1e-14 * energy.abs().max(1e-300) && self.force(law, self.x0).abs() < 1e-12 {
+        if 0.5 * self.mass * self.v0 * self.v0 <= 1e-14 * energy.abs().max(1e-300)
+            && self.force(law, self.x0).abs() < 1e-12
+        {
             return self.small_oscillation_omega(law);
         }
         let eps = 1e-13 * (hi - lo);
-        let left = if excess(self.x0) >= 0.0 { self.x0 } else { bisect(excess, lo + eps, self.x0) };
-        let right = if excess(self.x0) >= 0.0 { self.x0 } else { bisect(excess, self.x0, hi - eps) };
+        let left = if excess(self.x0) >= 0.0 {
+            self.x0
+        } else {
+            bisect(excess, lo + eps, self.x0)
+        };
+        let right = if excess(self.x0) >= 0.0 {
+            self.x0
+        } else {
+            bisect(excess, self.x0, hi - eps)
+        };
         // If the piston starts at a turning point, find the other one.
         let (a, b) = if left == right {
-            if self.force(law, self.x0) > 0.0 { (self.x0, bisect(excess, self.x0 + eps, hi - eps)) } else { (bisect(excess, lo + eps, self.x0 - eps), self.x0) }
+            if self.force(law, self.x0) > 0.0 {
+                (self.x0, bisect(excess, self.x0 + eps, hi - eps))
+            } else {
+                (bisect(excess, lo + eps, self.x0 - eps), self.x0)
+            }
         } else {
             (left, right)
         };
@@ -111,7 +139,8 @@ impl PistonSystem {
         let n = 20_000;
         let mut period = 0.0;
         for k in 0..n {
-            let theta = -std::f64::consts::FRAC_PI_2 + (k as f64 + 0.5) * std::f64::consts::PI / n as f64;
+            let theta =
+                -std::f64::consts::FRAC_PI_2 + (k as f64 + 0.5) * std::f64::consts::PI / n as f64;
             let x = c + h * theta.sin();
             let kinetic = (energy - self.potential(law, x)).max(0.0);
             if kinetic > 0.0 {
@@ -131,7 +160,11 @@ fn bisect(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
         if m == a || m == b {
             break;
         }
-        if (f(m) > 0.0) == (fa > 0.0) { a = m } else { b = m }
+        if (f(m) > 0.0) == (fa > 0.0) {
+            a = m
+        } else {
+            b = m
+        }
     }
     0.5 * (a + b)
 }
@@ -141,8 +174,18 @@ mod tests {
     use super::*;
 
     fn symmetric(v0: f64) -> PistonSystem {
-        let gas = Gas { energy: 2.5, free_length: 5.0 };
-        PistonSystem { dimension: 1, mass: 1000.0, x0: 6.0, v0, left: gas, right: gas }
+        let gas = Gas {
+            energy: 2.5,
+            free_length: 5.0,
+        };
+        PistonSystem {
+            dimension: 1,
+            mass: 1000.0,
+            x0: 6.0,
+            v0,
+            left: gas,
+            right: gas,
+        }
     }
 
     #[test]
@@ -159,7 +202,10 @@ mod tests {
     #[test]
     fn large_amplitude_changes_the_period() {
         let s = symmetric(0.2);
-        let (small, full) = (s.small_oscillation_omega(Law::Adiabatic), s.omega(Law::Adiabatic));
+        let (small, full) = (
+            s.small_oscillation_omega(Law::Adiabatic),
+            s.omega(Law::Adiabatic),
+        );
         assert!((full / small - 1.0).abs() > 0.01, "{full} vs {small}");
     }
 }

@@ -1,0 +1,36 @@
+//! The bundled quickstart, end to end through the `study` binary: it runs,
+//! writes every output, and its tables read back.
+
+use bonkers::study::store::read_parquet;
+use std::process::Command;
+
+#[test]
+fn quickstart_runs_and_its_tables_read_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("quickstart");
+    let status = Command::new(env!("CARGO_BIN_EXE_study"))
+        .args(["run", "studies/quickstart.toml", "--quiet", "--out"])
+        .arg(&out)
+        .status()
+        .unwrap();
+    assert!(status.success());
+    for file in [
+        "report.md",
+        "index.html",
+        "manifest.json",
+        "mackay_spacetime_200.svg",
+        "scalar_frequency_ratio.svg",
+    ] {
+        assert!(out.join(file).is_file(), "{file} missing");
+    }
+    let runs = read_parquet(&out.join("runs.parquet")).unwrap();
+    assert_eq!(runs.height(), 16);
+    let status = runs.column("status").unwrap().str().unwrap();
+    assert!((0..status.len()).all(|k| status.get(k) == Some("ok")));
+    let summary = read_parquet(&out.join("summary.parquet")).unwrap();
+    assert!(summary.height() >= 2 * 10);
+    let series = read_parquet(&out.join("series.parquet")).unwrap();
+    assert!(series.height() > 1000);
+    let html = std::fs::read_to_string(out.join("index.html")).unwrap();
+    assert!(html.contains("<svg") && !html.contains("http://") && !html.contains("https://"));
+}
