@@ -132,7 +132,7 @@ pub fn zero_crossing_omega(x: &Series, end: f64) -> f64 {
 /// period, to fall to 1/e of its start; NaN if the run ends first.
 pub fn relaxation_time(ep: &Series, equipartition: f64, period: f64) -> f64 {
     let excess0 = ep.value.first().copied().unwrap_or(f64::NAN) - equipartition;
-    if !(excess0 > 0.0) || ep.t.len() < 2 {
+    if excess0.is_nan() || excess0 <= 0.0 || ep.t.len() < 2 {
         return f64::NAN;
     }
     let t0 = ep.t[0];

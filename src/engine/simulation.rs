@@ -257,22 +257,22 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         } else {
             None
         };
-        if let Some(n) = normal {
-            if let Some(b) = bounce(&p.vel, &q.vel, p.inv_mass, q.inv_mass, &n) {
-                for k in 0..D {
-                    self.particles[i].vel[k] += b.dv_i[k];
-                    self.particles[j].vel[k] += b.dv_j[k];
-                }
-                self.counts.collisions += 1;
-                let event = PairCollision {
-                    time: self.time(),
-                    i,
-                    j,
-                    impulse_i: b.impulse_i,
-                    separation: r,
-                };
-                self.observer.pair_collision(&event);
+        if let Some(n) = normal
+            && let Some(b) = bounce(&p.vel, &q.vel, p.inv_mass, q.inv_mass, &n)
+        {
+            for k in 0..D {
+                self.particles[i].vel[k] += b.dv_i[k];
+                self.particles[j].vel[k] += b.dv_j[k];
             }
+            self.counts.collisions += 1;
+            let event = PairCollision {
+                time: self.time(),
+                i,
+                j,
+                impulse_i: b.impulse_i,
+                separation: r,
+            };
+            self.observer.pair_collision(&event);
         }
         self.stamp[i] = self.stamp[i].wrapping_add(1);
         self.stamp[j] = self.stamp[j].wrapping_add(1);

@@ -97,7 +97,7 @@ pub fn build<const D: usize>(spec: &SceneSpec, rng: &mut ChaCha8Rng) -> Result<B
                 Mass::Fixed(m) => m,
                 Mass::Range([a, b]) => a + (b - a) * rng.random::<f64>(),
             };
-            if !(m > 0.0) {
+            if m.is_nan() || m <= 0.0 {
                 return Err(format!(
                     "species `{}` has mass {m}; masses must be > 0 (or inf for immovable)",
                     s.name
@@ -166,7 +166,7 @@ pub fn build<const D: usize>(spec: &SceneSpec, rng: &mut ChaCha8Rng) -> Result<B
         if D != 1 {
             return Err("a piston is available in 1D scenes only in this version (a movable wall in 2D/3D is planned)".into());
         }
-        if !(ps.mass > 0.0) || !(0.0..=1.0).contains(&ps.position) {
+        if ps.mass.is_nan() || ps.mass <= 0.0 || !(0.0..=1.0).contains(&ps.position) {
             return Err(format!(
                 "piston: mass must be > 0 and position a fraction of the box in [0, 1] (got mass {}, position {})",
                 ps.mass, ps.position
