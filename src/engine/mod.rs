@@ -11,15 +11,17 @@ pub mod neighbours;
 pub mod observer;
 pub mod particle;
 pub mod queue;
+mod save;
 pub mod simulation;
 pub mod thermal;
 pub mod vector;
 
 pub use boundary::{Axis, SimBox, Wall};
 pub use build::BuildError;
-pub use neighbours::{CellGrid, Chain, Neighbourhood};
+pub use neighbours::{CellGrid, Chain, Neighbourhood, Persist};
 pub use observer::{Observer, PairCollision, Snapshot, WallHit};
 pub use particle::Particle;
+pub use save::{FORMAT_VERSION, SaveError};
 pub use simulation::{Counts, Simulation, Stop};
 
 /// The engine for each dimension: a chain of neighbours in 1D, a cell grid above.

@@ -22,6 +22,27 @@ impl EventQueue {
         }
     }
 
+    /// A queue holding these event times. The heap layout may differ from the
+    /// queue the times came from, but not the pop order: (time, index) is a
+    /// total order, so the earliest entry is the same whatever the layout.
+    pub fn from_times(time: Vec<f64>) -> Self {
+        let n = time.len();
+        let mut q = EventQueue {
+            heap: (0..n as u32).collect(),
+            slot: (0..n as u32).collect(),
+            time,
+        };
+        for k in (0..n / 2).rev() {
+            q.sift_down(k);
+        }
+        q
+    }
+
+    /// Every particle's event time, by particle index.
+    pub fn times(&self) -> &[f64] {
+        &self.time
+    }
+
     /// The particle with the earliest event, and its time.
     #[inline(always)]
     pub fn peek(&self) -> Option<(usize, f64)> {

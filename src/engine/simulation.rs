@@ -19,7 +19,7 @@ use super::vector::{Vector, dot, norm2, sub};
 
 /// What a particle's scheduled event is.
 #[derive(Debug, Clone, Copy, PartialEq)]
-enum Next {
+pub(super) enum Next {
     Nothing,
     Pair { j: u32, stamp: u32, image: Image },
     Wall { axis: u8, high: bool },
@@ -48,24 +48,24 @@ pub enum Stop {
 
 #[derive(Debug, Clone)]
 pub struct Simulation<const D: usize, N: Neighbourhood<D>, O: Observer<D>> {
-    particles: Vec<Particle<D>>,
-    sim_box: SimBox<D>,
-    neighbours: N,
-    queue: super::queue::EventQueue,
-    next: Vec<Next>,
-    stamp: Vec<u32>,
+    pub(super) particles: Vec<Particle<D>>,
+    pub(super) sim_box: SimBox<D>,
+    pub(super) neighbours: N,
+    pub(super) queue: super::queue::EventQueue,
+    pub(super) next: Vec<Next>,
+    pub(super) stamp: Vec<u32>,
     /// Displacement of each periodic image code.
-    shifts: Vec<Vector<D>>,
+    pub(super) shifts: Vec<Vector<D>>,
     /// Engine time, measured from `origin` (reset now and then so that long
     /// runs keep full precision in `now - t`).
-    now: f64,
-    origin: f64,
-    rebase_every: u64,
-    events_since_rebase: u64,
-    sample_every: Option<f64>,
-    samples_taken: u64,
-    sample_start: f64,
-    rng: ChaCha8Rng,
+    pub(super) now: f64,
+    pub(super) origin: f64,
+    pub(super) rebase_every: u64,
+    pub(super) events_since_rebase: u64,
+    pub(super) sample_every: Option<f64>,
+    pub(super) samples_taken: u64,
+    pub(super) sample_start: f64,
+    pub(super) rng: ChaCha8Rng,
     pub counts: Counts,
     pub observer: O,
 }

@@ -2,6 +2,7 @@
 //! each hook is only called on the observers that use it, so an observable
 //! nobody asked for costs nothing per event.
 
+mod heat;
 mod histogram;
 mod pressure;
 mod sampled;
@@ -9,6 +10,7 @@ mod sampled;
 use crate::engine::{Observer, PairCollision, Snapshot, WallHit};
 use crate::study::output::RunOutput;
 
+pub use heat::WallHeat;
 pub use histogram::ScaledVelocity;
 pub use pressure::{VirialPressure, WallPressure};
 pub use sampled::Sampled;
@@ -177,6 +179,7 @@ pub fn build<const D: usize>(
         match name.as_str() {
             "wall_pressure" => measures.push(Box::new(WallPressure::default())),
             "virial_pressure" => measures.push(Box::new(VirialPressure::<D>::default())),
+            "wall_heat" => measures.push(Box::new(WallHeat::<D>::default())),
             _ => sampled.push(format!("mean:{name}")),
         }
     }

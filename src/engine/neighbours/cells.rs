@@ -3,7 +3,7 @@
 //! adjacent cells, and it is re-examined each time it crosses into a new cell,
 //! so the cost of an event does not grow with N.
 
-use super::{Crossing, Image, Neighbourhood};
+use super::{Crossing, Image, Neighbourhood, Persist};
 use crate::engine::boundary::SimBox;
 use crate::engine::particle::Particle;
 
@@ -225,5 +225,46 @@ impl<const D: usize> Neighbourhood<D> for CellGrid<D> {
         }
         self.insert(i);
         wrapped
+    }
+}
+
+/// Saved as: each particle's cell coordinates, then the lists (head, next,
+/// prev). The grid's shape is recomputed by `build` from the radii and box.
+impl<const D: usize> Persist<D> for CellGrid<D> {
+    const KIND: u32 = 1;
+
+    fn state(&self) -> Vec<u32> {
+        let mut s: Vec<u32> = self.coord.iter().flatten().copied().collect();
+        s.extend(&self.head);
+        s.extend(&self.next);
+        s.extend(&self.prev);
+        s
+    }
+
+    fn restore(particles: &[Particle<D>], sim_box: &SimBox<D>, state: &[u32]) -> Result<Self, String> {
+        let mut grid = Self::build(particles, sim_box)?;
+        let (n, cells) = (particles.len(), grid.head.len());
+        if state.len() != D * n + cells + 2 * n {
+            return Err(format!(
+                "cell grid state has {} words; {n} particles in {cells} cells need {}",
+                state.len(),
+                D * n + cells + 2 * n
+            ));
+        }
+        let (coords, lists) = state.split_at(D * n);
+        for (c, saved) in grid.coord.iter_mut().zip(coords.chunks_exact(D)) {
+            c.copy_from_slice(saved);
+        }
+        let (head, rest) = lists.split_at(cells);
+        let (next, prev) = rest.split_at(n);
+        grid.head.copy_from_slice(head);
+        grid.next.copy_from_slice(next);
+        grid.prev.copy_from_slice(prev);
+        let cell_ok = grid.coord.iter().all(|c| (0..D).all(|k| c[k] < grid.n[k]));
+        let link_ok = lists.iter().all(|&j| j == NONE || (j as usize) < n);
+        if !(cell_ok && link_ok) {
+            return Err("cell grid state points outside the grid or the particles".into());
+        }
+        Ok(grid)
     }
 }

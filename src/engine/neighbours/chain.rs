@@ -1,7 +1,7 @@
 //! 1D: particles never pass each other, so each one can only hit the next on
 //! either side (and, on a periodic line, the two ends hit each other).
 
-use super::{Crossing, Image, Neighbourhood};
+use super::{Crossing, Image, Neighbourhood, Persist};
 use crate::engine::boundary::SimBox;
 use crate::engine::particle::Particle;
 
@@ -43,5 +43,21 @@ impl<const D: usize> Neighbourhood<D> for Chain {
 
     fn cross(&mut self, _i: usize, _c: Crossing, _p: &mut Particle<D>) -> bool {
         false
+    }
+}
+
+/// The chain is fixed by the particle count and the box: nothing to save.
+impl<const D: usize> Persist<D> for Chain {
+    const KIND: u32 = 0;
+
+    fn state(&self) -> Vec<u32> {
+        Vec::new()
+    }
+
+    fn restore(particles: &[Particle<D>], sim_box: &SimBox<D>, state: &[u32]) -> Result<Self, String> {
+        if !state.is_empty() {
+            return Err(format!("a chain has no saved state, found {} words", state.len()));
+        }
+        <Chain as Neighbourhood<D>>::build(particles, sim_box)
     }
 }

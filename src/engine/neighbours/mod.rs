@@ -51,6 +51,19 @@ pub trait Neighbourhood<const D: usize>: Sized + Clone + Send {
     fn cross(&mut self, i: usize, crossing: Crossing, p: &mut Particle<D>) -> bool;
 }
 
+/// A neighbourhood's state for a save file: what `build` cannot recompute
+/// from the particles. In a cell grid that is each particle's cell and the
+/// order of the cell lists, which is the order candidates are tried in and so
+/// decides which of two events at the same time a particle schedules.
+pub trait Persist<const D: usize>: Neighbourhood<D> {
+    /// Tags the kind in a save file, so it is only loaded into the same kind.
+    const KIND: u32;
+    fn state(&self) -> Vec<u32>;
+    /// Rebuild for these particles and box, then take on the saved state.
+    fn restore(particles: &[Particle<D>], sim_box: &SimBox<D>, state: &[u32])
+    -> Result<Self, String>;
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
