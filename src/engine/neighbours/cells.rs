@@ -241,7 +241,11 @@ impl<const D: usize> Persist<D> for CellGrid<D> {
         s
     }
 
-    fn restore(particles: &[Particle<D>], sim_box: &SimBox<D>, state: &[u32]) -> Result<Self, String> {
+    fn restore(
+        particles: &[Particle<D>],
+        sim_box: &SimBox<D>,
+        state: &[u32],
+    ) -> Result<Self, String> {
         let mut grid = Self::build(particles, sim_box)?;
         let (n, cells) = (particles.len(), grid.head.len());
         if state.len() != D * n + cells + 2 * n {

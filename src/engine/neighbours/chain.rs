@@ -54,9 +54,16 @@ impl<const D: usize> Persist<D> for Chain {
         Vec::new()
     }
 
-    fn restore(particles: &[Particle<D>], sim_box: &SimBox<D>, state: &[u32]) -> Result<Self, String> {
+    fn restore(
+        particles: &[Particle<D>],
+        sim_box: &SimBox<D>,
+        state: &[u32],
+    ) -> Result<Self, String> {
         if !state.is_empty() {
-            return Err(format!("a chain has no saved state, found {} words", state.len()));
+            return Err(format!(
+                "a chain has no saved state, found {} words",
+                state.len()
+            ));
         }
         <Chain as Neighbourhood<D>>::build(particles, sim_box)
     }

@@ -60,8 +60,11 @@ pub trait Persist<const D: usize>: Neighbourhood<D> {
     const KIND: u32;
     fn state(&self) -> Vec<u32>;
     /// Rebuild for these particles and box, then take on the saved state.
-    fn restore(particles: &[Particle<D>], sim_box: &SimBox<D>, state: &[u32])
-    -> Result<Self, String>;
+    fn restore(
+        particles: &[Particle<D>],
+        sim_box: &SimBox<D>,
+        state: &[u32],
+    ) -> Result<Self, String>;
 }
 
 #[cfg(test)]
