@@ -213,7 +213,9 @@ pub fn section(
          last half of the run, against equipartition 1/N_free. A heavy piston moves slowly, so each gas particle \
          hits it with nearly the same speed from both sides: it loses energy only through the small \
          velocity-dependent imbalance of those hits (a friction of order the gas density times its thermal \
-         speed), so the relaxation time grows in proportion to M.\n",
+         speed), so the relaxation time grows in proportion to M. Equipartition is reached only in runs much longer than \
+         the relaxation time: where `relaxation_time` is long or missing (the run ended first), a large z for \
+         `piston_share` measures how far from equilibrium the piston still is, not a failure of equipartition.\n",
     );
     Ok(ReportSection {
         title: "Piston: oscillation and dissipation".into(),

@@ -1,4 +1,4 @@
-//! Each scalar result against the first swept numeric parameter: mean ± stderr
+//! Each scalar result against the main swept numeric parameter: mean ± stderr
 //! per point, one line per combination of the other swept parameters, theory
 //! dashed beside it.
 
@@ -29,26 +29,27 @@ pub fn charts(summary: &[SummaryRow], points: &Points) -> Vec<(String, ChartSpec
         .collect()
 }
 
-/// The first swept parameter that is numeric at every point, preferring one
-/// that varies; None when nothing numeric is swept (then x is the point id).
+/// The numeric swept parameter with the most distinct values (the sweep's
+/// main axis; ties go to the first); None when nothing numeric is swept
+/// (then x is the point id).
 fn x_parameter(summary: &[SummaryRow]) -> Option<String> {
     let first = summary.first()?;
-    let numeric: Vec<&str> = first
-        .params
-        .iter()
-        .map(|(k, _)| k.as_str())
-        .filter(|k| summary.iter().all(|r| param(r, k).is_finite()))
-        .collect();
-    let varies = |k: &&str| {
-        let v0 = param(first, k);
-        summary.iter().any(|r| param(r, k) != v0)
+    let distinct = |k: &str| {
+        let mut v: Vec<u64> = summary.iter().map(|r| param(r, k).to_bits()).collect();
+        v.sort_unstable();
+        v.dedup();
+        v.len()
     };
-    numeric
-        .iter()
-        .copied()
-        .find(varies)
-        .or(numeric.first().copied())
-        .map(str::to_string)
+    let mut best: Option<(&str, usize)> = None;
+    for (k, _) in &first.params {
+        if summary.iter().all(|r| param(r, k).is_finite()) {
+            let n = distinct(k);
+            if best.is_none_or(|(_, m)| n > m) {
+                best = Some((k, n));
+            }
+        }
+    }
+    best.map(|(k, _)| k.to_string())
 }
 
 fn param(row: &SummaryRow, key: &str) -> f64 {
