@@ -78,11 +78,18 @@ velocities = { kind = "maxwell", temperature = 2.0, zero_momentum = true, energy
         5,
     )
     .unwrap();
-    let p: Vec<f64> = (0..3).map(|k| b.particles.iter().map(|q| q.vel[k] / q.inv_mass).sum()).collect();
+    let p: Vec<f64> = (0..3)
+        .map(|k| b.particles.iter().map(|q| q.vel[k] / q.inv_mass).sum())
+        .collect();
     assert!(p.iter().all(|x| x.abs() < 1e-12), "{p:?}");
     assert!((energy(&b) - 123.0).abs() < 1e-12);
     let u = built::<2>("dimension = 2\nbox = [10.0, 10.0]\nspecies = [{ name = \"a\", count = 30, mass = 2.0 }]\nvelocities = { kind = \"uniform\", p = 3.0 }\n", 2).unwrap();
-    assert!(u.particles.iter().all(|q| q.vel.iter().all(|v| v.abs() <= 1.5)), "momenta within [-p, p]");
+    assert!(
+        u.particles
+            .iter()
+            .all(|q| q.vel.iter().all(|v| v.abs() <= 1.5)),
+        "momenta within [-p, p]"
+    );
 }
 
 /// MacKay's piston start: all particles with equal velocities, so the piston
@@ -113,12 +120,17 @@ fn mackay_cradle_conserves_energy_and_balances_momentum_at_the_walls() {
     let b = built::<1>("preset = \"mackay-cradle\"", 1).unwrap();
     let e0 = energy(&b);
     let p0: f64 = b.particles.iter().map(|q| q.vel[0] / q.inv_mass).sum();
-    let mut sim: Simulation<1, Chain, WallMomentum> = Simulation::new(b.particles, b.sim_box, WallMomentum::default(), 1).unwrap();
+    let mut sim: Simulation<1, Chain, WallMomentum> =
+        Simulation::new(b.particles, b.sim_box, WallMomentum::default(), 1).unwrap();
     sim.run(Stop::Time(6000.0));
     assert!(sim.counts.collisions > 10_000);
     assert!((sim.kinetic_energy() - e0).abs() < 1e-12 * e0);
     let p1 = sim.momentum()[0];
-    assert!((p1 - p0 - sim.observer.0).abs() < 1e-9 * sim.observer.0.abs().max(1.0), "{p0} + {} != {p1}", sim.observer.0);
+    assert!(
+        (p1 - p0 - sim.observer.0).abs() < 1e-9 * sim.observer.0.abs().max(1.0),
+        "{p0} + {} != {p1}",
+        sim.observer.0
+    );
 }
 
 #[test]
@@ -126,7 +138,8 @@ fn imperial_scenes_do_what_the_seed_says() {
     // Four disks against the four walls come back reversed.
     let b = built::<2>("preset = \"imperial-box\"", 1).unwrap();
     let v0: Vec<[f64; 2]> = b.particles.iter().map(|p| p.vel).collect();
-    let mut sim: Simulation<2, CellGrid<2>, ()> = Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
+    let mut sim: Simulation<2, CellGrid<2>, ()> =
+        Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
     sim.run(Stop::Time(20.0));
     assert_eq!(sim.counts.wall_hits, 4);
     for (p, v) in sim.particles().iter().zip(&v0) {
@@ -134,14 +147,16 @@ fn imperial_scenes_do_what_the_seed_says() {
     }
     // Head-on, equal masses: the moving disk stops, the other takes its velocity.
     let b = built::<2>("preset = \"imperial-collision-1d\"", 1).unwrap();
-    let mut sim: Simulation<2, CellGrid<2>, ()> = Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
+    let mut sim: Simulation<2, CellGrid<2>, ()> =
+        Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
     sim.run(Stop::Time(20.0));
     assert_eq!(sim.counts.collisions, 1);
     assert_eq!(sim.particles()[0].vel, [0.0, 0.0]);
     assert_eq!(sim.particles()[1].vel, [1.0, 0.0]);
     // Oblique, equal masses, one at rest: they leave at right angles.
     let b = built::<2>("preset = \"imperial-collision-2d\"", 1).unwrap();
-    let mut sim: Simulation<2, CellGrid<2>, ()> = Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
+    let mut sim: Simulation<2, CellGrid<2>, ()> =
+        Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
     sim.run(Stop::Time(12.0));
     assert_eq!(sim.counts.collisions, 1);
     let (a, c) = (sim.particles()[0].vel, sim.particles()[1].vel);
@@ -150,17 +165,23 @@ fn imperial_scenes_do_what_the_seed_says() {
     // The sticking-bug cases never leave two disks overlapping.
     for name in ["imperial-sticking", "imperial-sticking-masses"] {
         let b = built::<2>(&format!("preset = \"{name}\""), 1).unwrap();
-        let mut sim: Simulation<2, CellGrid<2>, ()> = Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
+        let mut sim: Simulation<2, CellGrid<2>, ()> =
+            Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
         for k in 1..=200 {
             sim.run(Stop::Time(5.0 * k as f64));
-            assert!(sim.max_overlap() < 1e-12, "{name} overlaps at t = {}", 5 * k);
+            assert!(
+                sim.max_overlap() < 1e-12,
+                "{name} overlaps at t = {}",
+                5 * k
+            );
         }
         assert!(sim.counts.collisions > 10);
     }
     // 200 disks of radius 1 in a box of 100.
     let b = built::<2>("preset = \"imperial-200\"", 1).unwrap();
     let e0 = energy(&b);
-    let mut sim: Simulation<2, CellGrid<2>, ()> = Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
+    let mut sim: Simulation<2, CellGrid<2>, ()> =
+        Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
     sim.run(Stop::Time(2000.0));
     assert!(sim.counts.collisions > 1000);
     assert!((sim.kinetic_energy() - e0).abs() < 1e-12 * e0);
@@ -172,8 +193,18 @@ fn every_preset_builds_and_runs() {
         let text = format!("preset = \"{}\"", p.name);
         let d = scene(&text).dimension.unwrap();
         let ok = match d {
-            1 => built::<1>(&text, 7).and_then(|b| Simulation::<1, Chain, ()>::new(b.particles, b.sim_box, (), 1).map_err(|e| e.to_string())).map(|mut s| s.run(Stop::Time(10.0))),
-            2 => built::<2>(&text, 7).and_then(|b| Simulation::<2, CellGrid<2>, ()>::new(b.particles, b.sim_box, (), 1).map_err(|e| e.to_string())).map(|mut s| s.run(Stop::Time(10.0))),
+            1 => built::<1>(&text, 7)
+                .and_then(|b| {
+                    Simulation::<1, Chain, ()>::new(b.particles, b.sim_box, (), 1)
+                        .map_err(|e| e.to_string())
+                })
+                .map(|mut s| s.run(Stop::Time(10.0))),
+            2 => built::<2>(&text, 7)
+                .and_then(|b| {
+                    Simulation::<2, CellGrid<2>, ()>::new(b.particles, b.sim_box, (), 1)
+                        .map_err(|e| e.to_string())
+                })
+                .map(|mut s| s.run(Stop::Time(10.0))),
             _ => unreachable!(),
         };
         assert!(ok.is_ok(), "{}: {:?}", p.name, ok.err());
@@ -183,19 +214,33 @@ fn every_preset_builds_and_runs() {
 #[test]
 fn impossible_requests_are_clear_errors() {
     let err = built::<2>("dimension = 2\nbox = [10.0, 10.0]\nspecies = [{ name = \"a\", count = 500 }]\nplacement = { kind = \"random\" }\n", 1).unwrap_err();
-    assert!(err.contains("lattice"), "suggests what can be done instead: {err}");
-    let err = built::<2>("dimension = 2\nbox = [10.0]\nspecies = [{ name = \"a\", count = 5 }]\n", 1).unwrap_err();
+    assert!(
+        err.contains("lattice"),
+        "suggests what can be done instead: {err}"
+    );
+    let err = built::<2>(
+        "dimension = 2\nbox = [10.0]\nspecies = [{ name = \"a\", count = 5 }]\n",
+        1,
+    )
+    .unwrap_err();
     assert!(err.contains("one per axis"), "{err}");
     let err = built::<1>("dimension = 1\nbox = [10.0]\nspecies = [{ name = \"a\", count = 2 }]\nplacement = { kind = \"explicit\", positions = [[1.0]] }\n", 1).unwrap_err();
     assert!(err.contains("one per particle"), "{err}");
-    let err = built::<1>("dimension = 1\nbox = [10.0]\nspecies = [{ name = \"a\", count = 1, mass = -1.0 }]\n", 1).unwrap_err();
+    let err = built::<1>(
+        "dimension = 1\nbox = [10.0]\nspecies = [{ name = \"a\", count = 1, mass = -1.0 }]\n",
+        1,
+    )
+    .unwrap_err();
     assert!(err.contains("mass"), "{err}");
     let err = built::<2>("dimension = 2\nbox = [10.0, 10.0]\nspecies = [{ name = \"a\", count = 1 }]\npiston = { mass = 10.0 }\n", 1).unwrap_err();
     assert!(err.contains("1D"), "{err}");
-    let err = resolve(&toml::from_str::<SceneSpec>("preset = \"mackay-pistn\"").unwrap()).unwrap_err();
+    let err =
+        resolve(&toml::from_str::<SceneSpec>("preset = \"mackay-pistn\"").unwrap()).unwrap_err();
     assert!(err.contains("mackay-piston"), "{err}");
     // Overlapping explicit positions are refused by the engine with both indices.
     let b = built::<2>("dimension = 2\nbox = [10.0, 10.0]\nspecies = [{ name = \"a\", count = 2 }]\nplacement = { kind = \"explicit\", positions = [[2.0, 2.0], [2.5, 2.0]] }\n", 1).unwrap();
-    let err = Simulation::<2, CellGrid<2>, ()>::new(b.particles, b.sim_box, (), 1).unwrap_err().to_string();
+    let err = Simulation::<2, CellGrid<2>, ()>::new(b.particles, b.sim_box, (), 1)
+        .unwrap_err()
+        .to_string();
     assert!(err.contains("particles 0 and 1 overlap"), "{err}");
 }

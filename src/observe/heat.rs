@@ -12,7 +12,9 @@ pub struct WallHeat<const D: usize> {
 
 impl<const D: usize> Default for WallHeat<D> {
     fn default() -> Self {
-        WallHeat { gain: [[0.0; 2]; D] }
+        WallHeat {
+            gain: [[0.0; 2]; D],
+        }
     }
 }
 
@@ -29,7 +31,8 @@ impl<const D: usize> Measure<D> for WallHeat<D> {
     fn finish(self: Box<Self>, _ctx: &Context, out: &mut RunOutput) {
         for (axis, sides) in self.gain.iter().enumerate() {
             for (side, name) in [(0, "low"), (1, "high")] {
-                out.scalars.push((format!("heat_in.axis{axis}.{name}"), sides[side]));
+                out.scalars
+                    .push((format!("heat_in.axis{axis}.{name}"), sides[side]));
             }
         }
     }
