@@ -10,20 +10,26 @@
 //! line per system and a closing markdown table: bytes per particle measured
 //! with a counting global allocator, and from the engine's own tallies the
 //! events, cell crossings, stale predictions and wall hits per collision over
-//! the timed part. `docs/performance.md` quotes those figures.
+//! the timed part. `docs/performance.md` quotes those figures. A paired
+//! (interleaved) run compares the 2D system with observer `()` against an
+//! observer that only implements `sample` ("[paired]" line).
 //!
 //! Environment knobs (all optional):
 //! - `BONKERS_BENCH_ONLY=text`: build and run only systems whose name contains
-//!   `text` (criterion's own filter skips the timing but not the setup).
+//!   `text` (`text$`: whose name ends with `text`). Criterion's own filter
+//!   skips the timing but not the (sometimes long) setup.
 //! - `BONKERS_BENCH_SKIP_1M=1`: leave out the 10^6-sphere scaling point
-//!   (it dominates the setup time and needs ~150 MB).
+//!   (it dominates the setup time and needs ~150 MB). That point is melted
+//!   for 5 collisions per particle instead of 20 to keep the whole run near
+//!   four minutes; at phi = 0.30 the FCC start has long melted by then.
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 use bonkers::engine::{
-    CellGrid, Chain, Counts, Neighbourhood, Observer, Particle, SimBox, Simulation, Snapshot, Stop,
+    CellGrid, Chain, Counts, Disks, Neighbourhood, Observer, Particle, SimBox, Simulation,
+    Snapshot, Stop,
 };
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
 use rand::RngExt;
@@ -143,7 +149,10 @@ struct Spec<'a> {
 }
 
 fn wanted(name: &str) -> bool {
-    std::env::var("BONKERS_BENCH_ONLY").map_or(true, |s| name.contains(&s))
+    std::env::var("BONKERS_BENCH_ONLY").map_or(true, |s| match s.strip_suffix('$') {
+        Some(exact) => name.ends_with(exact),
+        None => name.contains(&s),
+    })
 }
 
 fn bench_system<const D: usize, N: Neighbourhood<D>, O: Observer<D>>(
@@ -238,6 +247,64 @@ fn format_row(r: &Row) -> String {
     )
 }
 
+/// (a) vs (b) of the "unused machinery" check, paired: the two systems start
+/// from the same state and follow bit-identical trajectories, so alternating
+/// equal slices of both in time cancels the drift a busy machine adds to two
+/// benchmarks run one after the other. Prints the median time ratio b/a.
+fn paired_observer_check() {
+    let name = "disks_2d_phi0.50_N10000/paired_unit_vs_sample_only";
+    if !wanted(name) {
+        return;
+    }
+    let (p, b) = disks(100, 0.5, 21);
+    let mut a = Disks::<()>::new(p.clone(), b, (), 1).expect("disks");
+    let mut s = Disks::<SampleOnly>::new(p, b, SampleOnly { samples: 0 }, 1).expect("disks");
+    a.run(Stop::Collisions(200_000));
+    s.run(Stop::Collisions(200_000));
+    let slice = 200_000;
+    let mut ratios = Vec::new();
+    let (mut total_a, mut total_s) = (Duration::ZERO, Duration::ZERO);
+    for round in 0..12 {
+        let mut time = |run_a: bool| {
+            let t = Instant::now();
+            if run_a {
+                a.run(Stop::Collisions(slice));
+            } else {
+                s.run(Stop::Collisions(slice));
+            }
+            t.elapsed()
+        };
+        // Alternate which goes first, so neither always gets the warmer cache.
+        let (ta, ts) = if round % 2 == 0 {
+            let ta = time(true);
+            (ta, time(false))
+        } else {
+            let ts = time(false);
+            (time(true), ts)
+        };
+        total_a += ta;
+        total_s += ts;
+        ratios.push(ts.as_secs_f64() / ta.as_secs_f64());
+    }
+    assert_eq!(a.counts, s.counts, "the observer changed the trajectory");
+    assert_eq!(
+        a.particles(),
+        s.particles(),
+        "the observer changed the trajectory"
+    );
+    ratios.sort_by(f64::total_cmp);
+    let median = 0.5 * (ratios[5] + ratios[6]);
+    let collisions = 12.0 * slice as f64;
+    eprintln!(
+        "[paired] {name}: (a) observer () {:.3} M coll/s, (b) sample-only observer {:.3} M coll/s, \
+         median per-slice time ratio b/a = {median:.3} (range {:.3}-{:.3}), trajectories identical",
+        collisions / total_a.as_secs_f64() / 1e6,
+        collisions / total_s.as_secs_f64() / 1e6,
+        ratios[0],
+        ratios[11],
+    );
+}
+
 fn engine(c: &mut Criterion) {
     let mut rows = Vec::new();
     const EQ: u64 = 20;
@@ -295,6 +362,7 @@ fn engine(c: &mut Criterion) {
         (),
         EQ,
     );
+    paired_observer_check();
 
     // 3 and 4. Spheres melted from FCC.
     let skip_1m = std::env::var("BONKERS_BENCH_SKIP_1M").is_ok_and(|v| v != "0");
@@ -322,7 +390,7 @@ fn engine(c: &mut Criterion) {
                 },
                 || common::fcc(cells, phi, 31),
                 (),
-                EQ,
+                if cells == 63 { 5 } else { EQ },
             );
         }
     }
