@@ -1,9 +1,26 @@
-//! The event queue: one scheduled event per particle, kept in an indexed
-//! binary min-heap so a particle's event can be replaced in O(log N) without
-//! leaving stale entries behind. Ties break on the particle index, so the
-//! order of events is a total order and runs reproduce bit for bit. Each heap
-//! slot holds its time beside the particle index, so a sift compares without
-//! a second, scattered memory access.
+//! The event queue: one scheduled event per particle, kept in a calendar
+//! (G. Paul, J. Comput. Phys. 221, 615, 2007). Time is cut into buckets of
+//! equal width. Events in the current bucket sit in a small indexed binary
+//! heap; later events wait unsorted in one list per bucket, on a ring that
+//! covers a few mean event times; the rare events beyond the ring wait in one
+//! overflow list. Scheduling an event is O(1) unless it falls in the current
+//! bucket, and the heap only ever holds the handful of events due next, so
+//! the cost per event does not grow with N.
+//!
+//! Pops follow the total order (time, particle index) whatever the bucket
+//! width: every event outside the heap lies in a later bucket than every
+//! event in it, and a later bucket means a later time. So the width is only
+//! a speed setting (retuned at each rebase) and runs reproduce bit for bit.
+
+const PARKED: u32 = u32::MAX;
+/// A `slot` with this bit set means "in list `slot & !IN_LIST`".
+const IN_LIST: u32 = 1 << 31;
+const NONE: u32 = u32::MAX;
+/// Events per bucket the width aims at: enough to keep the lists cheap to
+/// walk, few enough that the heap stays a few levels deep.
+const EVENTS_PER_BUCKET: f64 = 8.0;
+/// The ring covers about this many mean times-to-event.
+const HORIZON: f64 = 8.0;
 
 #[derive(Debug, Clone, Copy)]
 struct Entry {
@@ -20,9 +37,23 @@ impl Entry {
 
 #[derive(Debug, Clone)]
 pub struct EventQueue {
-    heap: Vec<Entry>,
-    /// slot[i] = heap slot of particle i.
+    time: Vec<f64>,
+    /// Per particle: its heap slot, `IN_LIST | list`, or `PARKED` (no event).
     slot: Vec<u32>,
+    /// Doubly linked bucket lists, by particle.
+    next: Vec<u32>,
+    prev: Vec<u32>,
+    /// The current bucket's events.
+    heap: Vec<Entry>,
+    /// List heads: one per ring bucket, then the overflow list.
+    heads: Vec<u32>,
+    in_ring: usize,
+    in_overflow: usize,
+    /// Bucket b holds times in [base + b w, base + (b + 1) w).
+    base: f64,
+    inv_width: f64,
+    /// The heap's bucket.
+    current: u64,
 }
 
 impl EventQueue {
@@ -30,29 +61,29 @@ impl EventQueue {
         Self::from_times(vec![f64::INFINITY; n])
     }
 
-    /// A queue holding these event times. The heap layout may differ from the
-    /// queue the times came from, but not the pop order: (time, index) is a
-    /// total order, so the earliest entry is the same whatever the layout.
+    /// A queue holding these event times (earliest first, ties by index).
     pub fn from_times(time: Vec<f64>) -> Self {
         let n = time.len();
         let mut q = EventQueue {
-            heap: time
-                .iter()
-                .enumerate()
-                .map(|(i, &t)| Entry {
-                    time: t,
-                    particle: i as u32,
-                })
-                .collect(),
-            slot: (0..n as u32).collect(),
+            time,
+            slot: vec![PARKED; n],
+            next: vec![NONE; n],
+            prev: vec![NONE; n],
+            heap: Vec::new(),
+            heads: Vec::new(),
+            in_ring: 0,
+            in_overflow: 0,
+            base: 0.0,
+            inv_width: 1.0,
+            current: 0,
         };
-        q.heapify();
+        q.rebuild();
         q
     }
 
     /// Every particle's event time, by particle index.
     pub fn times(&self) -> Vec<f64> {
-        (0..self.slot.len()).map(|i| self.time_of(i)).collect()
+        self.time.clone()
     }
 
     /// The particle with the earliest event, and its time.
@@ -62,37 +93,214 @@ impl EventQueue {
     }
 
     pub fn time_of(&self, i: usize) -> f64 {
-        self.heap[self.slot[i] as usize].time
+        self.time[i]
     }
 
     /// Replace particle i's event time.
     #[inline]
     pub fn set(&mut self, i: usize, t: f64) {
-        let k = self.slot[i] as usize;
-        let old = self.heap[k].time;
-        self.heap[k].time = t;
-        if t < old {
-            self.sift_up(k)
+        let k = self.slot[i];
+        if k & IN_LIST == 0 && t.is_finite() && self.bucket(t) <= self.current {
+            // Stays in the heap: move it up or down in place.
+            let old = self.time[i];
+            self.time[i] = t;
+            self.heap[k as usize].time = t;
+            if t < old {
+                self.sift_up(k as usize)
+            } else {
+                self.sift_down(k as usize)
+            }
         } else {
-            self.sift_down(k)
+            self.remove(i);
+            self.insert(i, t);
+        }
+        if self.heap.is_empty() {
+            self.refill();
         }
     }
 
-    /// Shift every time by `-dt` (a new time origin), keeping the heap valid.
+    /// Shift every time by `-dt` (a new time origin).
     pub fn rebase(&mut self, dt: f64) {
-        for e in &mut self.heap {
-            e.time -= dt;
+        for t in &mut self.time {
+            *t -= dt;
         }
-        self.heapify();
+        self.rebuild();
     }
 
-    fn heapify(&mut self) {
-        for k in (0..self.heap.len() / 2).rev() {
-            self.sift_down(k);
+    /// Choose the bucket width afresh for the events now queued.
+    pub fn retune(&mut self) {
+        self.rebuild();
+    }
+
+    #[inline(always)]
+    fn bucket(&self, t: f64) -> u64 {
+        // Saturates: far-future (and infinite) times land beyond the ring.
+        ((t - self.base) * self.inv_width) as u64
+    }
+
+    fn ring_len(&self) -> usize {
+        self.heads.len() - 1
+    }
+
+    /// Choose the bucket width from the events now queued, then file them all.
+    fn rebuild(&mut self) {
+        let mut ahead: Vec<f64> = self
+            .time
+            .iter()
+            .copied()
+            .filter(|t| t.is_finite())
+            .collect();
+        let live = ahead.len();
+        let first = ahead.iter().copied().fold(f64::INFINITY, f64::min);
+        // The rate at which events fall due near the front, from the time until
+        // the earliest eighth of them (robust to a long tail of far events).
+        let m = live / 8;
+        let width = if m > 0 {
+            let (_, t_m, _) = ahead.select_nth_unstable_by(m, f64::total_cmp);
+            EVENTS_PER_BUCKET * (*t_m - first) / m as f64
+        } else {
+            0.0
+        };
+        let width = if width > 0.0 && width.is_finite() {
+            width
+        } else {
+            1.0
+        };
+        let ring = ((HORIZON * live as f64 / EVENTS_PER_BUCKET) as usize)
+            .clamp(16, 1 << 24)
+            .next_power_of_two();
+        self.base = if first.is_finite() { first } else { 0.0 };
+        self.inv_width = 1.0 / width;
+        self.current = 0;
+        self.heads = vec![NONE; ring + 1];
+        self.heap.clear();
+        self.in_ring = 0;
+        self.in_overflow = 0;
+        self.slot.fill(PARKED);
+        for i in 0..self.time.len() {
+            self.insert(i, self.time[i]);
         }
-        for (k, e) in self.heap.iter().enumerate() {
-            self.slot[e.particle as usize] = k as u32;
+        if self.heap.is_empty() {
+            self.refill();
         }
+    }
+
+    fn insert(&mut self, i: usize, t: f64) {
+        self.time[i] = t;
+        if t == f64::INFINITY {
+            self.slot[i] = PARKED;
+            return;
+        }
+        let b = self.bucket(t);
+        if b <= self.current {
+            let k = self.heap.len();
+            self.heap.push(Entry {
+                time: t,
+                particle: i as u32,
+            });
+            self.slot[i] = k as u32;
+            self.sift_up(k);
+        } else if b - self.current < self.ring_len() as u64 {
+            self.in_ring += 1;
+            self.link(i, (b as usize) & (self.ring_len() - 1));
+        } else {
+            self.in_overflow += 1;
+            self.link(i, self.ring_len());
+        }
+    }
+
+    fn remove(&mut self, i: usize) {
+        let k = self.slot[i];
+        if k == PARKED {
+            return;
+        }
+        if k & IN_LIST != 0 {
+            let list = (k & !IN_LIST) as usize;
+            if list == self.ring_len() {
+                self.in_overflow -= 1;
+            } else {
+                self.in_ring -= 1;
+            }
+            let (p, n) = (self.prev[i], self.next[i]);
+            if p == NONE {
+                self.heads[list] = n;
+            } else {
+                self.next[p as usize] = n;
+            }
+            if n != NONE {
+                self.prev[n as usize] = p;
+            }
+        } else {
+            let k = k as usize;
+            let last = self.heap.pop().expect("a particle in the heap");
+            if k < self.heap.len() {
+                self.place(k, last);
+                self.sift_up(k);
+                let k = self.slot[last.particle as usize] as usize;
+                self.sift_down(k);
+            }
+        }
+        self.slot[i] = PARKED;
+    }
+
+    fn link(&mut self, i: usize, list: usize) {
+        let h = self.heads[list];
+        self.next[i] = h;
+        self.prev[i] = NONE;
+        if h != NONE {
+            self.prev[h as usize] = i as u32;
+        }
+        self.heads[list] = i as u32;
+        self.slot[i] = IN_LIST | list as u32;
+    }
+
+    /// Empty list `list`, filing each of its events afresh.
+    fn refile(&mut self, list: usize) {
+        let mut j = std::mem::replace(&mut self.heads[list], NONE);
+        while j != NONE {
+            let next = self.next[j as usize];
+            if list == self.ring_len() {
+                self.in_overflow -= 1;
+            } else {
+                self.in_ring -= 1;
+            }
+            self.insert(j as usize, self.time[j as usize]);
+            j = next;
+        }
+    }
+
+    /// The heap ran dry: move on to the next bucket that holds events.
+    fn refill(&mut self) {
+        while self.heap.is_empty() && self.in_ring + self.in_overflow > 0 {
+            if self.in_ring == 0 {
+                // Only far-future events left: jump straight to the first.
+                let first = self.take_overflow_min();
+                self.current = first;
+                self.file_overflow();
+                continue;
+            }
+            self.current += 1;
+            let slot = (self.current as usize) & (self.ring_len() - 1);
+            if slot == 0 {
+                self.file_overflow();
+            }
+            self.refile(slot);
+        }
+    }
+
+    fn take_overflow_min(&self) -> u64 {
+        let mut j = self.heads[self.ring_len()];
+        let mut first = u64::MAX;
+        while j != NONE {
+            first = first.min(self.bucket(self.time[j as usize]));
+            j = self.next[j as usize];
+        }
+        first
+    }
+
+    /// Move overflow events that now fall within the ring (or the current bucket).
+    fn file_overflow(&mut self) {
+        self.refile(self.ring_len());
     }
 
     #[inline(always)]
@@ -144,20 +352,22 @@ impl EventQueue {
 mod tests {
     use super::*;
 
+    fn drain(q: &mut EventQueue) -> Vec<(usize, f64)> {
+        let mut order = Vec::new();
+        while let Some((i, t)) = q.peek() {
+            order.push((i, t));
+            q.set(i, f64::INFINITY);
+        }
+        order
+    }
+
     #[test]
     fn pops_in_time_then_index_order() {
         let mut q = EventQueue::new(5);
         for (i, t) in [3.0, 1.0, 2.0, 1.0, 0.5].into_iter().enumerate() {
             q.set(i, t);
         }
-        let mut order = Vec::new();
-        while let Some((i, t)) = q.peek() {
-            if t.is_infinite() {
-                break;
-            }
-            order.push(i);
-            q.set(i, f64::INFINITY);
-        }
+        let order: Vec<usize> = drain(&mut q).into_iter().map(|(i, _)| i).collect();
         assert_eq!(order, vec![4, 1, 3, 2, 0]);
     }
 
@@ -169,5 +379,49 @@ mod tests {
         q.rebase(0.25);
         assert_eq!(q.peek(), Some((1, 0.0)));
         assert_eq!(q.time_of(2), 6.75);
+    }
+
+    /// Against a sorted reference: random reschedules (earlier, later, far
+    /// beyond the ring, parked, tied), interleaved with pops that reschedule
+    /// the popped particle into the future, as the engine does.
+    #[test]
+    fn agrees_with_a_sorted_reference_under_random_rescheduling() {
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+        let n = 300;
+        let times: Vec<f64> = (0..n).map(|_| rng.random::<f64>()).collect();
+        let mut q = EventQueue::from_times(times.clone());
+        let mut reference = times;
+        let mut now = 0.0;
+        for step in 0..200_000 {
+            let expect = (0..n)
+                .filter(|&i| reference[i].is_finite())
+                .min_by(|&a, &b| reference[a].total_cmp(&reference[b]).then(a.cmp(&b)))
+                .map(|i| (i, reference[i]));
+            assert_eq!(q.peek(), expect, "step {step}");
+            let Some((i, t)) = expect else { break };
+            now = t;
+            let later = match rng.random_range(0..20) {
+                0 => f64::INFINITY,
+                1 => now + 1e3 * rng.random::<f64>(),
+                2 => now,
+                3 => (now * 8.0).round() / 8.0 + 0.125,
+                _ => now + rng.random::<f64>(),
+            };
+            q.set(i, later);
+            reference[i] = later;
+            // Reschedule another particle somewhere from now on.
+            let j = rng.random_range(0..n);
+            let t = now + [0.0, 0.01, 0.5, 30.0][rng.random_range(0..4)] * rng.random::<f64>();
+            q.set(j, t);
+            reference[j] = t;
+            if step % 5000 == 4999 {
+                q.rebase(now);
+                reference.iter_mut().for_each(|r| *r -= now);
+                now = 0.0;
+            }
+            let _ = now;
+        }
+        assert_eq!(q.times(), reference);
     }
 }

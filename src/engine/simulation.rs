@@ -109,6 +109,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         for i in 0..n {
             sim.predict(i);
         }
+        sim.queue.retune();
         Ok(sim)
     }
 
