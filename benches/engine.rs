@@ -9,7 +9,7 @@
 //! Besides criterion's own report, the bench prints (on stderr) one summary
 //! line per system and a closing markdown table: bytes per particle measured
 //! with a counting global allocator, and from the engine's own tallies the
-//! events, cell crossings, stale predictions and wall hits per collision over
+//! events, cell renewals, stale predictions and wall hits per collision over
 //! the timed part. `docs/performance.md` quotes those figures. A paired
 //! (interleaved) run compares the 2D system with observer `()` against an
 //! observer that only implements `sample` ("[paired]" line).
@@ -28,7 +28,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 use bonkers::engine::{
-    CellGrid, Chain, Counts, Disks, Neighbourhood, Observer, Particle, SimBox, Simulation,
+    NeighbourList, Chain, Counts, Disks, Neighbourhood, Observer, Particle, SimBox, Simulation,
     Snapshot, Stop,
 };
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
@@ -134,7 +134,7 @@ fn delta(after: &Counts, before: &Counts) -> Counts {
         events: after.events - before.events,
         collisions: after.collisions - before.collisions,
         wall_hits: after.wall_hits - before.wall_hits,
-        crossings: after.crossings - before.crossings,
+        renewals: after.renewals - before.renewals,
         stale: after.stale - before.stale,
         samples: after.samples - before.samples,
     }
@@ -241,7 +241,7 @@ fn format_row(r: &Row) -> String {
         1e9 / r.collisions_per_s,
         r.bytes_per_particle,
         per(r.delta.events, c),
-        per(r.delta.crossings, c),
+        per(r.delta.renewals, c),
         per(r.delta.stale, c),
         per(r.delta.wall_hits, c),
     )
@@ -335,7 +335,7 @@ fn engine(c: &mut Criterion) {
         phi: 0.5,
         per_iter: 200_000,
     };
-    bench_system::<2, CellGrid<2>, _>(
+    bench_system::<2, NeighbourList<2>, _>(
         c,
         &mut rows,
         disk_spec("periodic_observer_unit"),
@@ -343,7 +343,7 @@ fn engine(c: &mut Criterion) {
         (),
         EQ,
     );
-    bench_system::<2, CellGrid<2>, _>(
+    bench_system::<2, NeighbourList<2>, _>(
         c,
         &mut rows,
         disk_spec("periodic_observer_sample_only"),
@@ -351,7 +351,7 @@ fn engine(c: &mut Criterion) {
         SampleOnly { samples: 0 },
         EQ,
     );
-    bench_system::<2, CellGrid<2>, _>(
+    bench_system::<2, NeighbourList<2>, _>(
         c,
         &mut rows,
         disk_spec("hard_walls_observer_unit"),
@@ -375,7 +375,7 @@ fn engine(c: &mut Criterion) {
                 continue;
             }
             let n = 4 * cells.pow(3);
-            bench_system::<3, CellGrid<3>, _>(
+            bench_system::<3, NeighbourList<3>, _>(
                 c,
                 &mut rows,
                 Spec {
@@ -397,7 +397,7 @@ fn engine(c: &mut Criterion) {
 
     eprintln!();
     eprintln!(
-        "| system | N | phi | collisions/s | ns/collision | bytes/particle | events/coll | crossings/coll | stale/coll | wall hits/coll |"
+        "| system | N | phi | collisions/s | ns/collision | bytes/particle | events/coll | renewals/coll | stale/coll | wall hits/coll |"
     );
     eprintln!("|---|---|---|---|---|---|---|---|---|---|");
     for r in &rows {

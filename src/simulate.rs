@@ -1,7 +1,7 @@
 //! One run: scene -> engine -> observers -> analyses -> RunOutput.
 
 use crate::analysis;
-use crate::engine::{CellGrid, Chain, Neighbourhood, Simulation, Stop};
+use crate::engine::{NeighbourList, Chain, Neighbourhood, Simulation, Stop};
 use crate::observe::{self, Context, ObserverSet};
 use crate::scene;
 use crate::study::output::RunOutput;
@@ -16,8 +16,8 @@ pub fn run(spec: &RunSpec) -> anyhow::Result<RunOutput> {
     let scene = scene::resolve(&spec.descriptor.scene).map_err(|e| anyhow!(e))?;
     match scene.dimension.unwrap_or(1) {
         1 => run_in::<1, Chain>(spec, &scene),
-        2 => run_in::<2, CellGrid<2>>(spec, &scene),
-        3 => run_in::<3, CellGrid<3>>(spec, &scene),
+        2 => run_in::<2, NeighbourList<2>>(spec, &scene),
+        3 => run_in::<3, NeighbourList<3>>(spec, &scene),
         d => bail!("scene.dimension = {d}; use 1, 2 or 3"),
     }
 }

@@ -2,7 +2,7 @@
 
 mod common;
 
-use bonkers::engine::{CellGrid, Snapshot};
+use bonkers::engine::{NeighbourList, Snapshot};
 use bonkers::engine::{Observer, Particle, Rods, SimBox, Simulation, Stop, WallHit};
 
 /// Sums the impulse delivered to each wall.
@@ -121,7 +121,7 @@ fn ideal_gas<const D: usize>(seed: u64) {
             .map(|p| 2.0 * p.vel[k].abs() / p.inv_mass)
             .sum()
     });
-    let mut sim: Simulation<D, CellGrid<D>, WallImpulse<D>> =
+    let mut sim: Simulation<D, NeighbourList<D>, WallImpulse<D>> =
         Simulation::new(particles, SimBox::hard(size), WallImpulse::default(), 1).unwrap();
     let t_end = 5_000.0;
     sim.run(Stop::Time(t_end));
@@ -158,9 +158,9 @@ fn sampling_does_not_perturb_the_dynamics() {
         }
     }
     let (ps, bx) = common::lattice::<2>(10, 1.3, 5);
-    let mut a: Simulation<2, CellGrid<2>, Count> =
+    let mut a: Simulation<2, NeighbourList<2>, Count> =
         Simulation::new(ps.clone(), bx, Count(0), 1).unwrap();
-    let mut b: Simulation<2, CellGrid<2>, ()> = Simulation::new(ps, bx, (), 1).unwrap();
+    let mut b: Simulation<2, NeighbourList<2>, ()> = Simulation::new(ps, bx, (), 1).unwrap();
     a.sample_every(Some(0.0137));
     a.run(Stop::Time(50.0));
     b.run(Stop::Time(50.0));

@@ -4,7 +4,7 @@
 
 mod common;
 
-use bonkers::engine::{CellGrid, Disks, Particle, Rods, SimBox, Simulation, Spheres, Stop};
+use bonkers::engine::{NeighbourList, Disks, Particle, Rods, SimBox, Simulation, Spheres, Stop};
 
 fn relative_drift(e0: f64, e1: f64) -> f64 {
     (e1 - e0).abs() / e0
@@ -269,7 +269,7 @@ fn a_box_a_million_diameters_wide() {
             )
         })
         .collect();
-    let mut sim: Simulation<2, CellGrid<2>, ()> =
+    let mut sim: Simulation<2, NeighbourList<2>, ()> =
         Simulation::new(particles, SimBox::hard([1e6, 100.0]), (), 1).unwrap();
     let e0 = sim.kinetic_energy();
     sim.run(Stop::Time(1e4));

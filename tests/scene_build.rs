@@ -1,7 +1,7 @@
 //! Scenes: placement, velocities, the seeds' bundled scenes, and the errors
 //! for impossible requests.
 
-use bonkers::engine::{CellGrid, Chain, Observer, Simulation, Stop, WallHit};
+use bonkers::engine::{NeighbourList, Chain, Observer, Simulation, Stop, WallHit};
 use bonkers::scene::spec::SceneSpec;
 use bonkers::scene::{Built, build, presets, resolve};
 use rand::SeedableRng;
@@ -57,10 +57,10 @@ fn lattices_fill_their_regions_without_overlap() {
         );
         let ok = if d == 2 {
             let b = built::<2>(&text, 1).unwrap();
-            Simulation::<2, CellGrid<2>, ()>::new(b.particles, b.sim_box, (), 1).map(|_| ())
+            Simulation::<2, NeighbourList<2>, ()>::new(b.particles, b.sim_box, (), 1).map(|_| ())
         } else {
             let b = built::<3>(&text, 1).unwrap();
-            Simulation::<3, CellGrid<3>, ()>::new(b.particles, b.sim_box, (), 1).map(|_| ())
+            Simulation::<3, NeighbourList<3>, ()>::new(b.particles, b.sim_box, (), 1).map(|_| ())
         };
         assert!(ok.is_ok(), "{lattice}: {:?}", ok.err());
     }
@@ -138,7 +138,7 @@ fn imperial_scenes_do_what_the_seed_says() {
     // Four disks against the four walls come back reversed.
     let b = built::<2>("preset = \"imperial-box\"", 1).unwrap();
     let v0: Vec<[f64; 2]> = b.particles.iter().map(|p| p.vel).collect();
-    let mut sim: Simulation<2, CellGrid<2>, ()> =
+    let mut sim: Simulation<2, NeighbourList<2>, ()> =
         Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
     sim.run(Stop::Time(20.0));
     assert_eq!(sim.counts.wall_hits, 4);
@@ -147,7 +147,7 @@ fn imperial_scenes_do_what_the_seed_says() {
     }
     // Head-on, equal masses: the moving disk stops, the other takes its velocity.
     let b = built::<2>("preset = \"imperial-collision-1d\"", 1).unwrap();
-    let mut sim: Simulation<2, CellGrid<2>, ()> =
+    let mut sim: Simulation<2, NeighbourList<2>, ()> =
         Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
     sim.run(Stop::Time(20.0));
     assert_eq!(sim.counts.collisions, 1);
@@ -155,7 +155,7 @@ fn imperial_scenes_do_what_the_seed_says() {
     assert_eq!(sim.particles()[1].vel, [1.0, 0.0]);
     // Oblique, equal masses, one at rest: they leave at right angles.
     let b = built::<2>("preset = \"imperial-collision-2d\"", 1).unwrap();
-    let mut sim: Simulation<2, CellGrid<2>, ()> =
+    let mut sim: Simulation<2, NeighbourList<2>, ()> =
         Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
     sim.run(Stop::Time(12.0));
     assert_eq!(sim.counts.collisions, 1);
@@ -165,7 +165,7 @@ fn imperial_scenes_do_what_the_seed_says() {
     // The sticking-bug cases never leave two disks overlapping.
     for name in ["imperial-sticking", "imperial-sticking-masses"] {
         let b = built::<2>(&format!("preset = \"{name}\""), 1).unwrap();
-        let mut sim: Simulation<2, CellGrid<2>, ()> =
+        let mut sim: Simulation<2, NeighbourList<2>, ()> =
             Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
         for k in 1..=200 {
             sim.run(Stop::Time(5.0 * k as f64));
@@ -180,7 +180,7 @@ fn imperial_scenes_do_what_the_seed_says() {
     // 200 disks of radius 1 in a box of 100.
     let b = built::<2>("preset = \"imperial-200\"", 1).unwrap();
     let e0 = energy(&b);
-    let mut sim: Simulation<2, CellGrid<2>, ()> =
+    let mut sim: Simulation<2, NeighbourList<2>, ()> =
         Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
     sim.run(Stop::Time(2000.0));
     assert!(sim.counts.collisions > 1000);
@@ -201,7 +201,7 @@ fn every_preset_builds_and_runs() {
                 .map(|mut s| s.run(Stop::Time(10.0))),
             2 => built::<2>(&text, 7)
                 .and_then(|b| {
-                    Simulation::<2, CellGrid<2>, ()>::new(b.particles, b.sim_box, (), 1)
+                    Simulation::<2, NeighbourList<2>, ()>::new(b.particles, b.sim_box, (), 1)
                         .map_err(|e| e.to_string())
                 })
                 .map(|mut s| s.run(Stop::Time(10.0))),
@@ -239,7 +239,7 @@ fn impossible_requests_are_clear_errors() {
     assert!(err.contains("mackay-piston"), "{err}");
     // Overlapping explicit positions are refused by the engine with both indices.
     let b = built::<2>("dimension = 2\nbox = [10.0, 10.0]\nspecies = [{ name = \"a\", count = 2 }]\nplacement = { kind = \"explicit\", positions = [[2.0, 2.0], [2.5, 2.0]] }\n", 1).unwrap();
-    let err = Simulation::<2, CellGrid<2>, ()>::new(b.particles, b.sim_box, (), 1)
+    let err = Simulation::<2, NeighbourList<2>, ()>::new(b.particles, b.sim_box, (), 1)
         .unwrap_err()
         .to_string();
     assert!(err.contains("particles 0 and 1 overlap"), "{err}");

@@ -2,9 +2,9 @@
 //! refused here, with what to do instead, so the event loop never sees it.
 
 use super::boundary::SimBox;
-use super::neighbours::{Neighbourhood, image_shift};
+use super::neighbours::{Neighbourhood, image_shift, separation};
 use super::particle::Particle;
-use super::vector::{norm2, sub};
+use super::vector::{Vector, norm2};
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("{0}")]
@@ -53,7 +53,8 @@ pub fn validate<const D: usize>(
                  since two infinite masses meeting (another immovable particle or a wall) has no defined outcome"
             ));
         }
-        for k in 0..D {
+        // A plane spans every axis but 0, where its other coordinates mean nothing.
+        for k in 0..if p.is_plane() { 1 } else { D } {
             let l = sim_box.size[k];
             if sim_box.axes[k].is_periodic() {
                 p.pos[k] = p.pos[k].rem_euclid(l);
@@ -71,6 +72,32 @@ pub fn validate<const D: usize>(
             }
         }
     }
+    let planes: Vec<usize> = (0..particles.len())
+        .filter(|&i| particles[i].is_plane())
+        .collect();
+    if let Some(&i) = planes.first() {
+        if D == 1 {
+            return fail(format!(
+                "particle {i} is a plane, but in one dimension a piston is an ordinary particle; make it one"
+            ));
+        }
+        if planes.len() > 1 {
+            return fail(format!(
+                "particles {planes:?} are planes; a system can have one plane (a piston) at most"
+            ));
+        }
+        if sim_box.axes[0].is_periodic() {
+            return fail(
+                "a plane (piston) slides along axis 0 between walls, but axis 0 is periodic; put walls on axis 0".into(),
+            );
+        }
+        if particles[i].vel[1..].iter().any(|&v| v != 0.0) {
+            return fail(format!(
+                "plane {i} moves across axis 0 ({:?}); a plane moves along axis 0 only",
+                particles[i].vel
+            ));
+        }
+    }
     if D == 1 && particles.windows(2).any(|w| w[1].pos[0] < w[0].pos[0]) {
         return fail("in one dimension particles must be listed from left to right".into());
     }
@@ -83,6 +110,9 @@ pub fn check_overlaps<const D: usize, N: Neighbourhood<D>>(
     sim_box: &SimBox<D>,
     neighbours: &N,
 ) -> Result<(), BuildError> {
+    let shifts: Vec<Vector<D>> = (0..3u32.pow(D as u32))
+        .map(|c| image_shift(c as u8, &sim_box.size))
+        .collect();
     for (i, p) in particles.iter().enumerate() {
         let mut found = None;
         neighbours.for_each_candidate(i, |j, image| {
@@ -90,8 +120,7 @@ pub fn check_overlaps<const D: usize, N: Neighbourhood<D>>(
                 return;
             }
             let q = &particles[j];
-            let shift = image_shift(image, &sim_box.size);
-            let r = sub(&std::array::from_fn(|k| q.pos[k] + shift[k]), &p.pos);
+            let r = separation(&p.pos, &q.pos, image, &shifts, N::PLANES);
             let sigma = p.radius + q.radius;
             if sigma > 0.0 && norm2(&r) < (sigma * (1.0 - 1e-10)).powi(2) {
                 found = Some((j, norm2(&r).sqrt(), sigma));

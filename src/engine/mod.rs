@@ -1,7 +1,7 @@
 //! The exact event-driven engine for hard rods (1D), disks (2D) and spheres (3D).
 //!
 //! Read `simulation.rs` first: it is the event loop. Everything else is one
-//! idea per file: the collision rule, the box, the queue, the neighbour search,
+//! idea per file: the collision rule, the box, the queue, the neighbour lists,
 //! the observer hooks, and the checks a system passes before it runs.
 
 pub mod boundary;
@@ -18,13 +18,15 @@ pub mod vector;
 
 pub use boundary::{Axis, SimBox, Wall};
 pub use build::BuildError;
-pub use neighbours::{CellGrid, Chain, Neighbourhood, Persist};
+pub use neighbours::{Chain, Image, NeighbourList, Neighbourhood, PLANE, Persist};
 pub use observer::{Observer, PairCollision, Snapshot, WallHit};
-pub use particle::Particle;
+pub use particle::{Particle, Shape};
 pub use save::{FORMAT_VERSION, SaveError};
 pub use simulation::{Counts, Simulation, Stop};
 
-/// The engine for each dimension: a chain of neighbours in 1D, a cell grid above.
+/// The engine for each dimension: a chain of neighbours in 1D, neighbour
+/// lists above; `WithPlane` for 2D/3D systems with a piston wall.
 pub type Rods<O> = Simulation<1, Chain, O>;
-pub type Disks<O> = Simulation<2, CellGrid<2>, O>;
-pub type Spheres<O> = Simulation<3, CellGrid<3>, O>;
+pub type Disks<O> = Simulation<2, NeighbourList<2>, O>;
+pub type Spheres<O> = Simulation<3, NeighbourList<3>, O>;
+pub type WithPlane<const D: usize, O> = Simulation<D, NeighbourList<D, true>, O>;

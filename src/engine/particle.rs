@@ -3,6 +3,17 @@
 
 use super::vector::{Vector, add_scaled};
 
+/// What a particle is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Shape {
+    /// A rod, disk or sphere of its radius.
+    #[default]
+    Ball,
+    /// A plane perpendicular to axis 0 spanning the box (the piston of 2D and
+    /// 3D scenes): `radius` thick on either side, moving along axis 0 only.
+    Plane,
+}
+
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Particle<const D: usize> {
     /// Position at time `t`.
@@ -14,6 +25,7 @@ pub struct Particle<const D: usize> {
     pub inv_mass: f64,
     pub radius: f64,
     pub species: u16,
+    pub shape: Shape,
 }
 
 impl<const D: usize> Particle<D> {
@@ -26,7 +38,22 @@ impl<const D: usize> Particle<D> {
             inv_mass,
             radius,
             species: 0,
+            shape: Shape::Ball,
         }
+    }
+
+    /// A plane at x = `x` moving along axis 0 at `vx` (its other coordinates
+    /// mean nothing and are 0), `half_thickness` thick on either side.
+    pub fn plane(x: f64, vx: f64, mass: f64, half_thickness: f64) -> Self {
+        let axis0 = |a| std::array::from_fn(|k| if k == 0 { a } else { 0.0 });
+        Particle {
+            shape: Shape::Plane,
+            ..Particle::new(axis0(x), axis0(vx), mass, half_thickness)
+        }
+    }
+
+    pub fn is_plane(&self) -> bool {
+        self.shape == Shape::Plane
     }
 
     pub fn with_species(mut self, species: u16) -> Self {

@@ -13,15 +13,15 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
 use super::boundary::{Axis, SimBox, Wall};
-use super::neighbours::{Crossing, Persist, image_shift};
+use super::neighbours::{PLANE, Persist, image_shift};
 use super::observer::Observer;
-use super::particle::Particle;
+use super::particle::{Particle, Shape};
 use super::queue::EventQueue;
 use super::simulation::{Counts, Next, Simulation};
 
 const MAGIC: &[u8; 8] = b"BONKERS\0";
 /// The format this build writes and reads.
-pub const FORMAT_VERSION: u32 = 1;
+pub const FORMAT_VERSION: u32 = 2;
 const HEADER: usize = 8 + 4 + 4 + 4 + 8;
 const LENGTH_AT: usize = HEADER - 8;
 
@@ -54,7 +54,8 @@ pub enum SaveError {
 fn kind_name(kind: u32) -> &'static str {
     match kind {
         0 => "chain (1D)",
-        1 => "cell grid",
+        2 => "neighbour list",
+        3 => "neighbour list with a plane",
         _ => "unknown neighbourhood",
     }
 }
@@ -81,6 +82,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
                 .into_iter()
                 .for_each(|x| o.f64(x));
             o.0.extend(p.species.to_le_bytes());
+            o.u8(p.is_plane() as u8);
         }
         self.sim_box.size.iter().for_each(|&x| o.f64(x));
         for axis in &self.sim_box.axes {
@@ -107,11 +109,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
                     o.u8(axis);
                     o.u8(high as u8);
                 }
-                Next::Cross(Crossing { axis, up }) => {
-                    o.u8(3);
-                    o.u8(axis);
-                    o.u8(up as u8);
-                }
+                Next::Renew => o.u8(3),
             }
         }
         self.stamp.iter().for_each(|&s| o.u32(s));
@@ -138,7 +136,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
             c.events,
             c.collisions,
             c.wall_hits,
-            c.crossings,
+            c.renewals,
             c.stale,
             c.samples,
         ] {
@@ -169,6 +167,11 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
             let vel = i.vector::<D>()?;
             let (t, inv_mass, radius) = (i.f64()?, i.f64()?, i.f64()?);
             let species = u16::from_le_bytes(i.array()?);
+            let shape = match i.u8()? {
+                0 => Shape::Ball,
+                1 => Shape::Plane,
+                tag => return Err(malformed(format!("unknown particle shape {tag}"))),
+            };
             particles.push(Particle {
                 pos,
                 vel,
@@ -176,6 +179,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
                 inv_mass,
                 radius,
                 species,
+                shape,
             });
         }
         let size = i.vector::<D>()?;
@@ -204,10 +208,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
                     axis: i.u8()?,
                     high: i.u8()? != 0,
                 },
-                3 => Next::Cross(Crossing {
-                    axis: i.u8()?,
-                    up: i.u8()? != 0,
-                }),
+                3 => Next::Renew,
                 tag => return Err(malformed(format!("unknown event kind {tag}"))),
             });
         }
@@ -215,9 +216,11 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
         // mid-run; refuse it here.
         let images = 3u32.pow(D as u32);
         if next.iter().any(|e| match *e {
-            Next::Pair { j, image, .. } => j as usize >= n || image as u32 >= images,
-            Next::Wall { axis, .. } | Next::Cross(Crossing { axis, .. }) => axis as usize >= D,
-            Next::Nothing => false,
+            Next::Pair { j, image, .. } => {
+                j as usize >= n || (image as u32 >= images && !(N::PLANES && image == PLANE))
+            }
+            Next::Wall { axis, .. } => axis as usize >= D,
+            Next::Nothing | Next::Renew => false,
         }) {
             return Err(malformed(
                 "an event names a particle or axis that does not exist".into(),
@@ -243,7 +246,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
             events: c[0],
             collisions: c[1],
             wall_hits: c[2],
-            crossings: c[3],
+            renewals: c[3],
             stale: c[4],
             samples: c[5],
         };

@@ -1,5 +1,5 @@
 //! The event loop. Each particle has exactly one scheduled event: the earliest
-//! of its next collision, wall hit or cell crossing. Repeatedly: take the
+//! of its next collision, wall hit or neighbourhood renewal. Repeatedly: take the
 //! earliest event in the queue, move the particles it involves to that time,
 //! apply it, and predict new events for those particles. A collision predicted
 //! with a partner that has since had an event of its own is stale and is
@@ -11,11 +11,11 @@ use rand_chacha::ChaCha8Rng;
 use super::boundary::{SimBox, Wall, wall_time};
 use super::build::{BuildError, check_overlaps, validate};
 use super::collide::{bounce, contact_time, line_contact_time};
-use super::neighbours::{Crossing, Image, Neighbourhood, image_shift, no_shift};
+use super::neighbours::{Image, Neighbourhood, PLANE, image_shift, no_shift, separation};
 use super::observer::{Observer, PairCollision, Snapshot, WallHit};
 use super::particle::Particle;
 use super::thermal;
-use super::vector::{Vector, dot, norm2, sub};
+use super::vector::{Vector, axis0, dot, norm2, sub};
 
 /// What a particle's scheduled event is.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -23,7 +23,8 @@ pub(super) enum Next {
     Nothing,
     Pair { j: u32, stamp: u32, image: Image },
     Wall { axis: u8, high: bool },
-    Cross(Crossing),
+    /// The particle reaches the edge of its neighbourhood.
+    Renew,
 }
 
 /// Tallies of what the engine did.
@@ -32,7 +33,7 @@ pub struct Counts {
     pub events: u64,
     pub collisions: u64,
     pub wall_hits: u64,
-    pub crossings: u64,
+    pub renewals: u64,
     pub stale: u64,
     pub samples: u64,
 }
@@ -228,9 +229,9 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 }
             }
             Next::Wall { axis, high } => self.hit_wall(i, axis as usize, high),
-            Next::Cross(crossing) => {
-                self.counts.crossings += 1;
-                if self.neighbours.cross(i, crossing, &mut self.particles[i]) {
+            Next::Renew => {
+                self.counts.renewals += 1;
+                if self.neighbours.renew(i, &mut self.particles[i], self.now) {
                     // The stored position jumped by a box length: partners'
                     // predictions used the old image, so they must be redone.
                     self.stamp[i] = self.stamp[i].wrapping_add(1);
@@ -246,8 +247,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         self.particles[i].advance_to(now);
         self.particles[j].advance_to(now);
         let (p, q) = (&self.particles[i], &self.particles[j]);
-        let shift = &self.shifts[image as usize];
-        let r: Vector<D> = std::array::from_fn(|k| q.pos[k] + shift[k] - p.pos[k]);
+        let r = separation(&p.pos, &q.pos, image, &self.shifts, N::PLANES);
         let dist = norm2(&r).sqrt();
         // On a line the side is known from the chain order, even for point
         // rods in contact (no separation to take a direction from).
@@ -339,21 +339,22 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 }
             }
         }
-        if let Some((t, crossing)) = self.neighbours.next_crossing(i, p) {
+        if let Some(t) = self.neighbours.next_renewal(i, p) {
             let t = t.max(now);
             if t < best_t {
                 best_t = t;
-                best = Next::Cross(crossing);
+                best = Next::Renew;
             }
         }
         let x_i = p.position_at(now);
         let (particles, shifts, stamp) = (&self.particles, &self.shifts, &self.stamp);
         self.neighbours.for_each_candidate(i, |j, image| {
             let q = &particles[j];
-            let shift = &shifts[image as usize];
-            let x_j = q.position_at(now);
-            let r: Vector<D> = std::array::from_fn(|k| x_j[k] + shift[k] - x_i[k]);
+            let r = separation(&x_i, &q.position_at(now), image, shifts, N::PLANES);
             let v = sub(&q.vel, &p.vel);
+            // A plane moves along axis 0 only, and only that part of the
+            // other's motion brings them together.
+            let v = if N::PLANES && image == PLANE { axis0(&v) } else { v };
             let sigma = p.radius + q.radius;
             let dt = if D == 1 {
                 line_contact_time(r[0], -v[0], line_side(i, j, image), sigma)
@@ -398,9 +399,8 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             let x_i = p.position_at(self.now);
             self.neighbours.for_each_candidate(i, |j, image| {
                 let q = &self.particles[j];
-                let shift = &self.shifts[image as usize];
                 let x_j = q.position_at(self.now);
-                let r: Vector<D> = std::array::from_fn(|k| x_j[k] + shift[k] - x_i[k]);
+                let r = separation(&x_i, &x_j, image, &self.shifts, N::PLANES);
                 let sigma = p.radius + q.radius;
                 if sigma > 0.0 {
                     worst = worst.max(1.0 - dot(&r, &r).sqrt() / sigma);
@@ -415,7 +415,8 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         let mut worst: f64 = 0.0;
         for p in &self.particles {
             let x = p.position_at(self.now);
-            for k in 0..D {
+            // A plane spans every axis but 0.
+            for k in 0..if p.is_plane() { 1 } else { D } {
                 if !self.sim_box.axes[k].is_periodic() {
                     let out = (p.radius - x[k]).max(x[k] + p.radius - self.sim_box.size[k]);
                     worst = worst.max(out / (2.0 * p.radius).max(1e-300));

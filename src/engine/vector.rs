@@ -26,3 +26,9 @@ pub fn add_scaled<const D: usize>(a: &Vector<D>, s: f64, b: &Vector<D>) -> Vecto
 pub fn norm2<const D: usize>(a: &Vector<D>) -> f64 {
     dot(a, a)
 }
+
+/// The axis-0 part of a vector: all that a plane perpendicular to axis 0 sees.
+#[inline(always)]
+pub fn axis0<const D: usize>(a: &Vector<D>) -> Vector<D> {
+    std::array::from_fn(|k| if k == 0 { a[0] } else { 0.0 })
+}

@@ -1,7 +1,7 @@
 //! 1D: particles never pass each other, so each one can only hit the next on
 //! either side (and, on a periodic line, the two ends hit each other).
 
-use super::{Crossing, Image, Neighbourhood, Persist};
+use super::{Image, Neighbourhood, Persist};
 use crate::engine::boundary::SimBox;
 use crate::engine::particle::Particle;
 
@@ -37,11 +37,11 @@ impl<const D: usize> Neighbourhood<D> for Chain {
         }
     }
 
-    fn next_crossing(&self, _i: usize, _p: &Particle<D>) -> Option<(f64, Crossing)> {
+    fn next_renewal(&self, _i: usize, _p: &Particle<D>) -> Option<f64> {
         None
     }
 
-    fn cross(&mut self, _i: usize, _c: Crossing, _p: &mut Particle<D>) -> bool {
+    fn renew(&mut self, _i: usize, _p: &mut Particle<D>, _now: f64) -> bool {
         false
     }
 }

@@ -1,11 +1,13 @@
 //! Who can a particle hit next? 1D needs only its two neighbours in the chain
-//! (order never changes); 2D and 3D use a cell grid with crossing events.
+//! (order never changes); 2D and 3D keep a neighbour list per particle,
+//! renewed when the particle has moved a shell's width.
 
-mod cells;
 mod chain;
+mod grid;
+mod lists;
 
-pub use cells::CellGrid;
 pub use chain::Chain;
+pub use lists::NeighbourList;
 
 use super::boundary::SimBox;
 use super::particle::Particle;
@@ -13,8 +15,11 @@ use super::vector::Vector;
 
 /// Which periodic image of a partner: per axis an offset in {-1, 0, +1}
 /// boxes, packed in base 3 with axis 0 as the lowest digit (so 13 is "no
-/// shift" in 3D, 4 in 2D, 1 in 1D).
+/// shift" in 3D, 4 in 2D, 1 in 1D). `PLANE` marks a pair with a plane.
 pub type Image = u8;
+
+/// The image code of a pair one of which is a plane perpendicular to axis 0.
+pub const PLANE: Image = 31;
 
 pub fn no_shift<const D: usize>() -> Image {
     (0..D).fold(0, |code, _| code * 3 + 1)
@@ -32,29 +37,43 @@ pub fn image_shift<const D: usize>(image: Image, size: &Vector<D>) -> Vector<D> 
     shift
 }
 
-/// A cell boundary crossing: which axis, and upwards or downwards.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Crossing {
-    pub axis: u8,
-    pub up: bool,
+/// The vector from a point at `x_i` to one at `x_j` seen as image `image`
+/// (`shifts` by image code). A plane spans every axis but 0, so a pair with a
+/// plane is separated along axis 0 only; `planes` says whether that case can
+/// arise at all, and compiles it out when it cannot.
+#[inline(always)]
+pub fn separation<const D: usize>(
+    x_i: &Vector<D>,
+    x_j: &Vector<D>,
+    image: Image,
+    shifts: &[Vector<D>],
+    planes: bool,
+) -> Vector<D> {
+    if planes && image == PLANE {
+        std::array::from_fn(|k| if k == 0 { x_j[0] - x_i[0] } else { 0.0 })
+    } else {
+        let s = &shifts[image as usize];
+        std::array::from_fn(|k| x_j[k] + s[k] - x_i[k])
+    }
 }
 
 pub trait Neighbourhood<const D: usize>: Sized + Clone + Send {
+    /// Whether a plane (a piston wall) can take part. A neighbourhood without
+    /// planes compiles every plane branch of the event loop away.
+    const PLANES: bool = false;
     /// Index the particles (already validated and, in 1D, sorted).
     fn build(particles: &[Particle<D>], sim_box: &SimBox<D>) -> Result<Self, String>;
-    /// Call `f(j, image)` for every particle j that i could hit before its next crossing.
+    /// Call `f(j, image)` for every particle j that i could hit before its next renewal.
     fn for_each_candidate(&self, i: usize, f: impl FnMut(usize, Image));
-    /// When `p` (particle i) next leaves its cell: absolute time and crossing.
-    fn next_crossing(&self, i: usize, p: &Particle<D>) -> Option<(f64, Crossing)>;
-    /// Move particle i into its next cell; returns true if it wrapped around a
-    /// periodic boundary (its stored position moved by a box length).
-    fn cross(&mut self, i: usize, crossing: Crossing, p: &mut Particle<D>) -> bool;
+    /// When `p` (particle i) next needs its neighbourhood renewed (absolute time).
+    fn next_renewal(&self, i: usize, p: &Particle<D>) -> Option<f64>;
+    /// Renew particle i's neighbourhood at time `now` (moving `p` there);
+    /// returns true if its stored position jumped by a box length.
+    fn renew(&mut self, i: usize, p: &mut Particle<D>, now: f64) -> bool;
 }
 
 /// A neighbourhood's state for a save file: what `build` cannot recompute
-/// from the particles. In a cell grid that is each particle's cell and the
-/// order of the cell lists, which is the order candidates are tried in and so
-/// decides which of two events at the same time a particle schedules.
+/// from the particles.
 pub trait Persist<const D: usize>: Neighbourhood<D> {
     /// Tags the kind in a save file, so it is only loaded into the same kind.
     const KIND: u32;

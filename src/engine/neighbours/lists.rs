@@ -1,0 +1,387 @@
+//! 2D/3D: neighbour lists with a shell (after Donev, Torquato and Stillinger,
+//! J. Comput. Phys. 202, 737, 2005, and Smallenburg, EPJE 45, 22, 2022).
+//!
+//! Each particle owns a neighbourhood: the ball of radius r + shell around its
+//! *centre*, the position it had when its list was last renewed. While a
+//! particle stays inside its neighbourhood it can only touch particles whose
+//! neighbourhoods overlap its own, so its list holds exactly those: a handful
+//! at any density. When it reaches the edge of its neighbourhood (an event
+//! like any other) the list is renewed around where it is now. Between
+//! renewals nothing is re-examined, however many cell boundaries it crosses.
+//!
+//! Lists are symmetric (j is in i's list exactly when i is in j's), so a pair
+//! that can meet is seen from both sides, and sorted by index, so they are a
+//! function of the centres alone: that is all a save file needs.
+//!
+//! With `PLANES`, a plane perpendicular to axis 0 (the piston of 2D and 3D
+//! scenes) takes part too: its neighbourhood is the slab its faces sweep while
+//! it moves less than a shell along axis 0, and its list holds every particle
+//! whose neighbourhood meets that slab. Without `PLANES` none of this is
+//! compiled into the event loop.
+
+use super::grid::Grid;
+use super::{Image, Neighbourhood, PLANE, Persist, image_shift};
+use crate::engine::boundary::SimBox;
+use crate::engine::particle::Particle;
+use crate::engine::vector::{Vector, axis0, dot, norm2, sub};
+
+/// A list entry packs a particle index and an image code: `j << 5 | image`.
+const IMAGE_BITS: u32 = 5;
+const MAX_PARTICLES: usize = 1 << (32 - IMAGE_BITS);
+
+#[inline(always)]
+fn pack(j: usize, image: Image) -> u32 {
+    (j as u32) << IMAGE_BITS | image as u32
+}
+
+#[inline(always)]
+fn unpack(e: u32) -> (usize, Image) {
+    ((e >> IMAGE_BITS) as usize, (e & ((1 << IMAGE_BITS) - 1)) as Image)
+}
+
+/// The image of i as seen from j, when j is i's image `image`.
+fn mirror<const D: usize>(image: Image) -> Image {
+    if image == PLANE {
+        PLANE
+    } else {
+        (3u8.pow(D as u32) - 1) - image
+    }
+}
+
+#[derive(Debug, Clone)]
+pub struct NeighbourList<const D: usize, const PLANES: bool = false> {
+    shell: f64,
+    size: Vector<D>,
+    periodic: [bool; D],
+    shifts: Vec<Vector<D>>,
+    radius: Vec<f64>,
+    largest_radius: f64,
+    centre: Vec<Vector<D>>,
+    /// The centres of every particle but the plane.
+    grid: Grid<D>,
+    /// List i is `entries[i * cap..][..len[i]]`; `cap` grows when a list fills.
+    cap: usize,
+    len: Vec<u32>,
+    entries: Vec<u32>,
+    /// The plane's index (with `PLANES`), and its list, sorted.
+    plane: Option<usize>,
+    plane_list: Vec<u32>,
+}
+
+impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
+    /// The shell: the distance a particle may wander from its centre. Wider
+    /// means rarer renewals but longer lists; a fraction of the mean free
+    /// path balances the two. Capped so that periodic axes keep three cells.
+    fn shell_for(particles: &[Particle<D>], sim_box: &SimBox<D>) -> Result<f64, String> {
+        let balls = particles.iter().filter(|p| !p.is_plane());
+        let largest = balls.clone().map(|p| p.radius).fold(0.0, f64::max);
+        let count = balls.count().max(1) as f64;
+        let sigma = 2.0 * largest;
+        let density = count / sim_box.volume();
+        // Ideal-gas mean free path 1 / (sqrt2 rho s), s the collision cross
+        // section (2 sigma in 2D, pi sigma^2 in 3D), against the spacing.
+        let cross_section = if D == 2 {
+            2.0 * sigma
+        } else {
+            std::f64::consts::PI * sigma * sigma
+        };
+        let free_path = 1.0 / (std::f64::consts::SQRT_2 * density * cross_section);
+        let spacing = density.powf(-1.0 / D as f64);
+        let f: f64 = std::env::var("SHELLF").ok().and_then(|s| s.parse().ok()).unwrap_or(1.0);
+        let mut shell = (f * free_path).clamp(0.1 * sigma, spacing.max(sigma));
+        if !(shell > 0.0) {
+            shell = spacing;
+        }
+        for k in 0..D {
+            if sim_box.axes[k].is_periodic() {
+                let room = sim_box.size[k] / 6.0 - largest;
+                if room < 0.01 * sigma.max(f64::MIN_POSITIVE) {
+                    return Err(format!(
+                        "periodic axis {k} is {} long, too short for particles of diameter {sigma}; \
+                         make the box at least {} long or use walls on that axis",
+                        sim_box.size[k],
+                        3.0 * sigma * 1.02
+                    ));
+                }
+                shell = shell.min(room);
+            }
+        }
+        Ok(shell)
+    }
+
+    fn list(&self, i: usize) -> &[u32] {
+        &self.entries[i * self.cap..i * self.cap + self.len[i] as usize]
+    }
+
+    /// Do the neighbourhoods of i and j (j's image `image`) overlap?
+    fn overlap(&self, i: usize, j: usize, image: Image) -> bool {
+        let reach = self.radius[i] + self.radius[j] + 2.0 * self.shell;
+        if PLANES && image == PLANE {
+            let gap = self.centre[j][0] - self.centre[i][0];
+            return gap.abs() < reach;
+        }
+        let s = &self.shifts[image as usize];
+        let r: Vector<D> = std::array::from_fn(|k| self.centre[j][k] + s[k] - self.centre[i][k]);
+        norm2(&r) < reach * reach
+    }
+
+    /// Put `e` into list i, keeping it sorted.
+    fn insert(&mut self, i: usize, e: u32) {
+        if PLANES && Some(i) == self.plane {
+            let at = self.plane_list.partition_point(|&x| x < e);
+            self.plane_list.insert(at, e);
+            return;
+        }
+        if self.len[i] as usize == self.cap {
+            self.grow();
+        }
+        let list = &mut self.entries[i * self.cap..(i + 1) * self.cap];
+        let n = self.len[i] as usize;
+        let at = list[..n].partition_point(|&x| x < e);
+        list.copy_within(at..n, at + 1);
+        list[at] = e;
+        self.len[i] += 1;
+    }
+
+    /// Take particle j out of list i.
+    fn remove(&mut self, i: usize, j: usize) {
+        let key = |e: &u32| (e >> IMAGE_BITS) as usize;
+        if PLANES && Some(i) == self.plane {
+            if let Ok(at) = self.plane_list.binary_search_by_key(&j, key) {
+                self.plane_list.remove(at);
+            }
+            return;
+        }
+        let n = self.len[i] as usize;
+        let list = &mut self.entries[i * self.cap..i * self.cap + n];
+        if let Ok(at) = list.binary_search_by_key(&j, key) {
+            list.copy_within(at + 1..n, at);
+            self.len[i] -= 1;
+        }
+    }
+
+    fn grow(&mut self) {
+        let cap = self.cap + self.cap / 2;
+        let mut entries = vec![0; self.len.len() * cap];
+        for i in 0..self.len.len() {
+            let n = self.len[i] as usize;
+            entries[i * cap..i * cap + n].copy_from_slice(self.list(i));
+        }
+        self.entries = entries;
+        self.cap = cap;
+    }
+
+    /// Everything whose neighbourhood meets that of i, at its current centre.
+    fn find(&self, i: usize) -> Vec<u32> {
+        let mut found = Vec::new();
+        let c = &self.centre[i];
+        if PLANES && Some(i) == self.plane {
+            let reach = self.radius[i] + self.largest_radius + 2.0 * self.shell;
+            self.grid.for_each_in_slab(c[0] - reach, c[0] + reach, |j| {
+                if self.overlap(i, j, PLANE) {
+                    found.push(pack(j, PLANE));
+                }
+            });
+        } else {
+            self.grid.for_each_near(c, |j, image| {
+                if j != i && self.overlap(i, j, image) {
+                    found.push(pack(j, image));
+                }
+            });
+            if let Some(k) = self.plane.filter(|_| PLANES)
+                && self.overlap(i, k, PLANE)
+            {
+                found.push(pack(k, PLANE));
+            }
+        }
+        found.sort_unstable();
+        found
+    }
+
+    /// Renew i's list around its current centre, and its partners' lists.
+    fn relist(&mut self, i: usize) {
+        let old: Vec<u32> = if PLANES && Some(i) == self.plane {
+            std::mem::take(&mut self.plane_list)
+        } else {
+            let old = self.list(i).to_vec();
+            self.len[i] = 0;
+            old
+        };
+        for e in old {
+            self.remove(unpack(e).0, i);
+        }
+        for e in self.find(i) {
+            let (j, image) = unpack(e);
+            self.insert(i, e);
+            self.insert(j, pack(i, mirror::<D>(image)));
+        }
+    }
+
+    /// Build every list from the centres.
+    fn list_all(&mut self) {
+        self.len.fill(0);
+        self.plane_list.clear();
+        for i in 0..self.centre.len() {
+            if Some(i) != self.plane {
+                self.grid.place(i, &self.centre[i]);
+            }
+        }
+        for i in 0..self.centre.len() {
+            for e in self.find(i) {
+                if unpack(e).0 > i {
+                    let (j, image) = unpack(e);
+                    self.insert(i, e);
+                    self.insert(j, pack(i, mirror::<D>(image)));
+                }
+            }
+        }
+    }
+}
+
+impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, PLANES> {
+    const PLANES: bool = PLANES;
+
+    fn build(particles: &[Particle<D>], sim_box: &SimBox<D>) -> Result<Self, String> {
+        if D < 2 {
+            return Err("neighbour lists are for two and three dimensions".into());
+        }
+        if particles.len() >= MAX_PARTICLES {
+            return Err(format!(
+                "{} particles is more than this engine indexes ({MAX_PARTICLES})",
+                particles.len()
+            ));
+        }
+        let plane = particles.iter().position(Particle::is_plane);
+        if plane.is_some() && !PLANES {
+            return Err("this system has a plane (a piston wall); build it with NeighbourList<D, true>".into());
+        }
+        let shell = Self::shell_for(particles, sim_box)?;
+        let largest_radius = particles
+            .iter()
+            .filter(|p| !p.is_plane())
+            .map(|p| p.radius)
+            .fold(0.0, f64::max);
+        let n = particles.len();
+        let mut lists = NeighbourList {
+            shell,
+            size: sim_box.size,
+            periodic: std::array::from_fn(|k| sim_box.axes[k].is_periodic()),
+            shifts: (0..3u32.pow(D as u32))
+                .map(|c| image_shift(c as Image, &sim_box.size))
+                .collect(),
+            radius: particles.iter().map(|p| p.radius).collect(),
+            largest_radius,
+            centre: particles.iter().map(|p| p.pos).collect(),
+            grid: Grid::new(n, 2.0 * (largest_radius + shell), sim_box),
+            cap: 8,
+            len: vec![0; n],
+            entries: vec![0; n * 8],
+            plane,
+            plane_list: Vec::new(),
+        };
+        lists.list_all();
+        Ok(lists)
+    }
+
+    #[inline(always)]
+    fn for_each_candidate(&self, i: usize, mut f: impl FnMut(usize, Image)) {
+        let list = if PLANES && Some(i) == self.plane {
+            &self.plane_list[..]
+        } else {
+            self.list(i)
+        };
+        for &e in list {
+            let (j, image) = unpack(e);
+            f(j, image);
+        }
+    }
+
+    /// When p (particle i) reaches the edge of its neighbourhood.
+    #[inline]
+    fn next_renewal(&self, i: usize, p: &Particle<D>) -> Option<f64> {
+        let mut d = sub(&p.pos, &self.centre[i]);
+        let mut v = p.vel;
+        if PLANES && Some(i) == self.plane {
+            (d, v) = (axis0(&d), axis0(&v));
+        }
+        // Solve |d + v s| = edge for s > 0, d inside: cancellation-free roots.
+        // The edge sits a hair inside the shell the lists were drawn with, so
+        // round-off in this time can never carry a particle past it.
+        let edge = self.shell * (1.0 - 1e-9);
+        let (a, b, c) = (dot(&v, &v), dot(&d, &v), dot(&d, &d) - edge * edge);
+        if a == 0.0 {
+            return None;
+        }
+        if c >= 0.0 {
+            return Some(p.t);
+        }
+        let root = (b * b - a * c).sqrt();
+        let s = if b <= 0.0 { (root - b) / a } else { -c / (b + root) };
+        Some(p.t + s)
+    }
+
+    fn renew(&mut self, i: usize, p: &mut Particle<D>, now: f64) -> bool {
+        p.advance_to(now);
+        let mut wrapped = false;
+        for k in 0..D {
+            if self.periodic[k] && !(0.0..self.size[k]).contains(&p.pos[k]) {
+                p.pos[k] -= self.size[k] * (p.pos[k] / self.size[k]).floor();
+                if p.pos[k] >= self.size[k] {
+                    p.pos[k] = 0.0;
+                }
+                wrapped = true;
+            }
+        }
+        self.centre[i] = p.pos;
+        if Some(i) != self.plane {
+            self.grid.place(i, &p.pos);
+        }
+        self.relist(i);
+        wrapped
+    }
+}
+
+/// Saved as every centre, each coordinate as two words (low, high): the lists
+/// follow from the centres.
+impl<const D: usize, const PLANES: bool> Persist<D> for NeighbourList<D, PLANES> {
+    const KIND: u32 = 2 + PLANES as u32;
+
+    fn state(&self) -> Vec<u32> {
+        self.centre
+            .iter()
+            .flatten()
+            .flat_map(|x| {
+                let bits = x.to_bits();
+                [bits as u32, (bits >> 32) as u32]
+            })
+            .collect()
+    }
+
+    fn restore(
+        particles: &[Particle<D>],
+        sim_box: &SimBox<D>,
+        state: &[u32],
+    ) -> Result<Self, String> {
+        let mut lists = Self::build(particles, sim_box)?;
+        let words = 2 * D * particles.len();
+        if state.len() != words {
+            return Err(format!(
+                "neighbour-list state has {} words; {} particles need {words}",
+                state.len(),
+                particles.len()
+            ));
+        }
+        let coords: Vec<f64> = state
+            .chunks_exact(2)
+            .map(|w| f64::from_bits(w[0] as u64 | (w[1] as u64) << 32))
+            .collect();
+        for (c, saved) in lists.centre.iter_mut().zip(coords.chunks_exact(D)) {
+            c.copy_from_slice(saved);
+        }
+        if lists.centre.iter().flatten().any(|x| !x.is_finite()) {
+            return Err("neighbour-list state holds a centre that is not a finite number".into());
+        }
+        lists.list_all();
+        Ok(lists)
+    }
+}
