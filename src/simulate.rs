@@ -1,7 +1,7 @@
 //! One run: scene -> engine -> observers -> analyses -> RunOutput.
 
 use crate::analysis;
-use crate::engine::{NeighbourList, Chain, Neighbourhood, Simulation, Stop};
+use crate::engine::{Chain, NeighbourList, Neighbourhood, Simulation, Stop};
 use crate::observe::{self, Context, ObserverSet};
 use crate::scene;
 use crate::study::output::RunOutput;
@@ -15,23 +15,51 @@ use std::time::Instant;
 pub fn run(spec: &RunSpec) -> anyhow::Result<RunOutput> {
     let scene = scene::resolve(&spec.descriptor.scene).map_err(|e| anyhow!(e))?;
     match scene.dimension.unwrap_or(1) {
-        1 => run_in::<1, Chain>(spec, &scene),
-        2 => run_in::<2, NeighbourList<2>>(spec, &scene),
-        3 => run_in::<3, NeighbourList<3>>(spec, &scene),
+        1 => build_and_run::<1>(spec, &scene, run_in::<1, Chain>),
+        2 => build_and_run::<2>(spec, &scene, pick::<2>),
+        3 => build_and_run::<3>(spec, &scene, pick::<3>),
         d => bail!("scene.dimension = {d}; use 1, 2 or 3"),
     }
 }
 
-fn run_in<const D: usize, N: Neighbourhood<D>>(
+type Runner<const D: usize> =
+    fn(&RunSpec, scene::Built<D>, ChaCha8Rng, Instant) -> anyhow::Result<RunOutput>;
+
+/// In 2D and 3D, the engine with plane support only for scenes with a
+/// piston wall: others pay nothing for it.
+fn pick<const D: usize>(
+    spec: &RunSpec,
+    built: scene::Built<D>,
+    rng: ChaCha8Rng,
+    started: Instant,
+) -> anyhow::Result<RunOutput> {
+    if built.particles.iter().any(|p| p.is_plane()) {
+        run_in::<D, NeighbourList<D, true>>(spec, built, rng, started)
+    } else {
+        run_in::<D, NeighbourList<D>>(spec, built, rng, started)
+    }
+}
+
+fn build_and_run<const D: usize>(
     spec: &RunSpec,
     scene: &scene::spec::SceneSpec,
+    run: Runner<D>,
 ) -> anyhow::Result<RunOutput> {
     let started = Instant::now();
-    let d = &spec.descriptor;
     // One stream per run: the scene draws from it first, then the engine's
     // thermal walls get a seed drawn from it.
     let mut rng = ChaCha8Rng::seed_from_u64(spec.seed);
     let built = scene::build::<D>(scene, &mut rng).map_err(|e| anyhow!("scene: {e}"))?;
+    run(spec, built, rng, started)
+}
+
+fn run_in<const D: usize, N: Neighbourhood<D>>(
+    spec: &RunSpec,
+    built: scene::Built<D>,
+    mut rng: ChaCha8Rng,
+    started: Instant,
+) -> anyhow::Result<RunOutput> {
+    let d = &spec.descriptor;
     let needs = analysis::requirements(d);
     let union = |a: &[String], b: &[&str]| {
         let mut v = a.to_vec();
@@ -75,7 +103,6 @@ fn run_in<const D: usize, N: Neighbourhood<D>>(
         collisions: sim.counts.collisions,
         ..Default::default()
     };
-    let movable = sim.particles().iter().filter(|p| !p.is_immovable()).count() as f64;
     let sim_box = *sim.sim_box();
     let volume = sim_box.volume();
     let ctx = Context {
@@ -88,7 +115,7 @@ fn run_in<const D: usize, N: Neighbourhood<D>>(
             .map(|k| 2.0 * volume / sim_box.size[k])
             .sum(),
         dimension: D,
-        degrees_of_freedom: D as f64 * (movable - if sim_box.all_periodic() { 1.0 } else { 0.0 }),
+        degrees_of_freedom: sim.degrees_of_freedom(),
     };
     let energy1 = sim.kinetic_energy();
     let thermal = sim_box.has_thermal_walls();

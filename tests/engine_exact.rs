@@ -172,3 +172,27 @@ fn sampling_does_not_perturb_the_dynamics() {
     };
     assert_eq!(state(a.particles()), state(b.particles()));
 }
+
+/// Temperature divides kinetic energy by the free degrees of freedom: d per
+/// ball and one per plane, less one per axis along which momentum is
+/// conserved (periodic, and nothing immovable to take momentum up).
+#[test]
+fn degrees_of_freedom_count_what_can_move() {
+    use bonkers::engine::{Axis, Particle, SimBox, degrees_of_freedom};
+    let balls: Vec<Particle<2>> = (0..5)
+        .map(|i| Particle::new([1.0 + 2.0 * i as f64, 1.0], [1.0, 0.0], 1.0, 0.5))
+        .collect();
+    let walls = SimBox::hard([20.0, 20.0]);
+    let periodic = SimBox::periodic([20.0, 20.0]);
+    let mut mixed = periodic;
+    mixed.axes[0] = Axis::HARD;
+    assert_eq!(degrees_of_freedom(&balls, &walls), 10.0);
+    assert_eq!(degrees_of_freedom(&balls, &periodic), 8.0);
+    assert_eq!(degrees_of_freedom(&balls, &mixed), 9.0);
+    let mut with_plane = balls.clone();
+    with_plane.push(Particle::plane(15.0, 0.0, 10.0, 0.1));
+    assert_eq!(degrees_of_freedom(&with_plane, &mixed), 10.0);
+    let mut anchored = balls;
+    anchored.push(Particle::new([15.0, 15.0], [0.0, 0.0], f64::INFINITY, 0.5));
+    assert_eq!(degrees_of_freedom(&anchored, &periodic), 10.0);
+}

@@ -156,6 +156,27 @@ fn disks_at_a_thermal_wall_continue_bit_identically() {
     assert!(at_save.wall_hits > 0);
 }
 
+/// Disks either side of a movable plane (the 2D piston), walls along x,
+/// periodic along y.
+fn disks_with_a_plane() -> (Vec<Particle<2>>, SimBox<2>) {
+    let (mut particles, mut sim_box) = common::lattice::<2>(10, 1.6, 17);
+    sim_box.axes[0] = Axis::HARD;
+    // Lattice columns sit at x = 0.8, 2.4, ..., so x = 8 is 0.8 from the nearest.
+    particles.push(Particle::plane(8.0, 0.1, 10.0, 0.2));
+    (particles, sim_box)
+}
+
+#[test]
+fn disks_with_a_plane_continue_bit_identically() {
+    let (whole, halves) = by_collisions(20_000);
+    continues_bit_identically::<2, NeighbourList<2, true>>(
+        disks_with_a_plane(),
+        Some(0.5),
+        whole,
+        halves,
+    );
+}
+
 #[test]
 fn periodic_spheres_continue_bit_identically() {
     let (whole, halves) = by_collisions(20_000);

@@ -22,7 +22,7 @@ pub use neighbours::{Chain, Image, NeighbourList, Neighbourhood, PLANE, Persist}
 pub use observer::{Observer, PairCollision, Snapshot, WallHit};
 pub use particle::{Particle, Shape};
 pub use save::{FORMAT_VERSION, SaveError};
-pub use simulation::{Counts, Simulation, Stop};
+pub use simulation::{Counts, Simulation, Stop, degrees_of_freedom};
 
 /// The engine for each dimension: a chain of neighbours in 1D, neighbour
 /// lists above; `WithPlane` for 2D/3D systems with a piston wall.

@@ -162,6 +162,14 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         p
     }
 
+    /// Kinetic degrees of freedom, what temperature divides the kinetic energy
+    /// by: D per movable ball and 1 per movable plane, less one for each axis
+    /// along which total momentum is conserved (periodic, with nothing
+    /// immovable to take momentum up).
+    pub fn degrees_of_freedom(&self) -> f64 {
+        degrees_of_freedom(&self.particles, &self.sim_box)
+    }
+
     /// Run until `stop`, taking samples on the way.
     pub fn run(&mut self, stop: Stop) {
         let end_collisions = match stop {
@@ -430,6 +438,19 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     pub fn identity_image() -> Image {
         no_shift::<D>()
     }
+}
+
+/// See [`Simulation::degrees_of_freedom`].
+pub fn degrees_of_freedom<const D: usize>(particles: &[Particle<D>], sim_box: &SimBox<D>) -> f64 {
+    let movable = particles.iter().filter(|p| !p.is_immovable());
+    let free: usize = movable.clone().map(|p| if p.is_plane() { 1 } else { D }).sum();
+    let anchored = particles.iter().any(Particle::is_immovable);
+    let conserved = if anchored || movable.count() == 0 {
+        0
+    } else {
+        sim_box.axes.iter().filter(|a| a.is_periodic()).count()
+    };
+    free.saturating_sub(conserved) as f64
 }
 
 /// In 1D: +1 if j is i's right-hand neighbour in the chain, -1 if left

@@ -1,7 +1,7 @@
 //! Observables read off the state at each sampling time (the seeds' clock).
 
 use super::{Context, Measure};
-use crate::engine::{Observer, Snapshot};
+use crate::engine::{Observer, Snapshot, degrees_of_freedom};
 use crate::study::output::{RunOutput, Series};
 
 /// Records the named sampled observables; a name "mean:<x>" keeps only the
@@ -41,11 +41,9 @@ impl<const D: usize> Observer<D> for Sampled {
         let mut k = 0;
         let names = std::mem::take(&mut self.names);
         let kinetic = s.kinetic_energy();
-        // Free degrees of freedom: d N, or d (N - 1) if momentum is conserved.
-        let movable = s.particles.iter().filter(|p| !p.is_immovable()).count() as f64;
         let dof = *self
             .dof
-            .get_or_insert(D as f64 * (movable - if s.sim_box.all_periodic() { 1.0 } else { 0.0 }));
+            .get_or_insert_with(|| degrees_of_freedom(s.particles, s.sim_box));
         for name in &names {
             let plain = name.strip_prefix("mean:").unwrap_or(name);
             match plain {

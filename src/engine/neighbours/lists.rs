@@ -66,6 +66,8 @@ pub struct NeighbourList<const D: usize, const PLANES: bool = false> {
     /// The plane's index (with `PLANES`), and its list, sorted.
     plane: Option<usize>,
     plane_list: Vec<u32>,
+    /// Room to work in while renewing, kept to spare an allocation each time.
+    scratch: Vec<u32>,
 }
 
 impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
@@ -171,9 +173,10 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         self.cap = cap;
     }
 
-    /// Everything whose neighbourhood meets that of i, at its current centre.
-    fn find(&self, i: usize) -> Vec<u32> {
-        let mut found = Vec::new();
+    /// Everything whose neighbourhood meets that of i at its current centre,
+    /// into `found`, sorted.
+    fn find(&self, i: usize, found: &mut Vec<u32>) {
+        found.clear();
         let c = &self.centre[i];
         if PLANES && Some(i) == self.plane {
             let reach = self.radius[i] + self.largest_radius + 2.0 * self.shell;
@@ -195,26 +198,28 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
             }
         }
         found.sort_unstable();
-        found
     }
 
     /// Renew i's list around its current centre, and its partners' lists.
     fn relist(&mut self, i: usize) {
-        let old: Vec<u32> = if PLANES && Some(i) == self.plane {
-            std::mem::take(&mut self.plane_list)
+        let mut buf = std::mem::take(&mut self.scratch);
+        buf.clear();
+        if PLANES && Some(i) == self.plane {
+            buf.append(&mut self.plane_list);
         } else {
-            let old = self.list(i).to_vec();
+            buf.extend_from_slice(self.list(i));
             self.len[i] = 0;
-            old
-        };
-        for e in old {
+        }
+        for &e in &buf {
             self.remove(unpack(e).0, i);
         }
-        for e in self.find(i) {
+        self.find(i, &mut buf);
+        for &e in &buf {
             let (j, image) = unpack(e);
             self.insert(i, e);
             self.insert(j, pack(i, mirror::<D>(image)));
         }
+        self.scratch = buf;
     }
 
     /// Build every list from the centres.
@@ -226,15 +231,18 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
                 self.grid.place(i, &self.centre[i]);
             }
         }
+        let mut buf = std::mem::take(&mut self.scratch);
         for i in 0..self.centre.len() {
-            for e in self.find(i) {
-                if unpack(e).0 > i {
-                    let (j, image) = unpack(e);
+            self.find(i, &mut buf);
+            for &e in &buf {
+                let (j, image) = unpack(e);
+                if j > i {
                     self.insert(i, e);
                     self.insert(j, pack(i, mirror::<D>(image)));
                 }
             }
         }
+        self.scratch = buf;
     }
 }
 
@@ -278,6 +286,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
             entries: vec![0; n * 8],
             plane,
             plane_list: Vec::new(),
+            scratch: Vec::new(),
         };
         lists.list_all();
         Ok(lists)
