@@ -9,10 +9,11 @@
 //! Besides criterion's own report, the bench prints (on stderr) one summary
 //! line per system and a closing markdown table: bytes per particle measured
 //! with a counting global allocator, and from the engine's own tallies the
-//! events, cell renewals, stale predictions and wall hits per collision over
-//! the timed part. `docs/performance.md` quotes those figures. A paired
-//! (interleaved) run compares the 2D system with observer `()` against an
-//! observer that only implements `sample` ("[paired]" line).
+//! events, neighbour-list renewals, stale predictions and wall hits per collision over
+//! the timed part. `docs/performance.md` quotes those figures. Paired
+//! (interleaved) runs check that unused machinery costs nothing: the 2D
+//! system with observer `()` against an observer that only implements
+//! `sample`, and without plane support against with it ("[paired]" lines).
 //!
 //! Environment knobs (all optional):
 //! - `BONKERS_BENCH_ONLY=text`: build and run only systems whose name contains
@@ -28,8 +29,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 use bonkers::engine::{
-    NeighbourList, Chain, Counts, Disks, Neighbourhood, Observer, Particle, SimBox, Simulation,
-    Snapshot, Stop,
+    Chain, Counts, Disks, NeighbourList, Neighbourhood, Observer, Particle, SimBox, Simulation,
+    Snapshot, Stop, WithPlane,
 };
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
 use rand::RngExt;
@@ -247,62 +248,90 @@ fn format_row(r: &Row) -> String {
     )
 }
 
-/// (a) vs (b) of the "unused machinery" check, paired: the two systems start
-/// from the same state and follow bit-identical trajectories, so alternating
-/// equal slices of both in time cancels the drift a busy machine adds to two
-/// benchmarks run one after the other. Prints the median time ratio b/a.
-fn paired_observer_check() {
-    let name = "disks_2d_phi0.50_N10000/paired_unit_vs_sample_only";
-    if !wanted(name) {
-        return;
-    }
-    let (p, b) = disks(100, 0.5, 21);
-    let mut a = Disks::<()>::new(p.clone(), b, (), 1).expect("disks");
-    let mut s = Disks::<SampleOnly>::new(p, b, SampleOnly { samples: 0 }, 1).expect("disks");
-    a.run(Stop::Collisions(200_000));
-    s.run(Stop::Collisions(200_000));
+/// Time two systems that follow bit-identical trajectories in alternating
+/// equal slices: pairing cancels the drift a busy machine adds to two
+/// benchmarks run one after the other. Prints both rates and the median
+/// per-slice time ratio b/a.
+fn paired(name: &str, labels: [&str; 2], mut run_a: impl FnMut(u64), mut run_b: impl FnMut(u64)) {
     let slice = 200_000;
+    run_a(slice);
+    run_b(slice);
     let mut ratios = Vec::new();
-    let (mut total_a, mut total_s) = (Duration::ZERO, Duration::ZERO);
+    let (mut total_a, mut total_b) = (Duration::ZERO, Duration::ZERO);
     for round in 0..12 {
-        let mut time = |run_a: bool| {
+        let time = |run: &mut dyn FnMut(u64)| {
             let t = Instant::now();
-            if run_a {
-                a.run(Stop::Collisions(slice));
-            } else {
-                s.run(Stop::Collisions(slice));
-            }
+            run(slice);
             t.elapsed()
         };
         // Alternate which goes first, so neither always gets the warmer cache.
-        let (ta, ts) = if round % 2 == 0 {
-            let ta = time(true);
-            (ta, time(false))
+        let (ta, tb) = if round % 2 == 0 {
+            let ta = time(&mut run_a);
+            (ta, time(&mut run_b))
         } else {
-            let ts = time(false);
-            (time(true), ts)
+            let tb = time(&mut run_b);
+            (time(&mut run_a), tb)
         };
         total_a += ta;
-        total_s += ts;
-        ratios.push(ts.as_secs_f64() / ta.as_secs_f64());
+        total_b += tb;
+        ratios.push(tb.as_secs_f64() / ta.as_secs_f64());
     }
-    assert_eq!(a.counts, s.counts, "the observer changed the trajectory");
-    assert_eq!(
-        a.particles(),
-        s.particles(),
-        "the observer changed the trajectory"
-    );
     ratios.sort_by(f64::total_cmp);
     let median = 0.5 * (ratios[5] + ratios[6]);
     let collisions = 12.0 * slice as f64;
     eprintln!(
-        "[paired] {name}: (a) observer () {:.3} M coll/s, (b) sample-only observer {:.3} M coll/s, \
-         median per-slice time ratio b/a = {median:.3} (range {:.3}-{:.3}), trajectories identical",
+        "[paired] {name}: (a) {} {:.3} M coll/s, (b) {} {:.3} M coll/s, \
+         median per-slice time ratio b/a = {median:.3} (range {:.3}-{:.3})",
+        labels[0],
         collisions / total_a.as_secs_f64() / 1e6,
-        collisions / total_s.as_secs_f64() / 1e6,
+        labels[1],
+        collisions / total_b.as_secs_f64() / 1e6,
         ratios[0],
         ratios[11],
     );
+}
+
+/// The "unused machinery" checks: (1) an observer that implements only
+/// `sample` against none at all; (2) the engine with plane support compiled
+/// in (no plane in the system) against the one without. Each pair starts from
+/// the same state and must end in the same state.
+fn unused_machinery_checks() {
+    let name = "disks_2d_phi0.50_N10000/paired_unit_vs_sample_only";
+    if wanted(name) {
+        let (p, b) = disks(100, 0.5, 21);
+        let mut a = Disks::<()>::new(p.clone(), b, (), 1).expect("disks");
+        let mut s = Disks::<SampleOnly>::new(p, b, SampleOnly { samples: 0 }, 1).expect("disks");
+        paired(
+            name,
+            ["observer ()", "sample-only observer"],
+            |n| a.run(Stop::Collisions(n)),
+            |n| s.run(Stop::Collisions(n)),
+        );
+        assert_eq!(a.counts, s.counts, "the observer changed the trajectory");
+        assert_eq!(
+            a.particles(),
+            s.particles(),
+            "the observer changed the trajectory"
+        );
+    }
+    let name = "disks_2d_phi0.50_N10000/paired_no_planes_vs_planes_compiled_in";
+    if wanted(name) {
+        let (p, b) = disks(100, 0.5, 21);
+        let mut a = Disks::<()>::new(p.clone(), b, (), 1).expect("disks");
+        let mut w = WithPlane::<2, ()>::new(p, b, (), 1).expect("disks");
+        paired(
+            name,
+            ["NeighbourList<2>", "NeighbourList<2, true> without a plane"],
+            |n| a.run(Stop::Collisions(n)),
+            |n| w.run(Stop::Collisions(n)),
+        );
+        assert_eq!(a.counts, w.counts, "plane support changed the trajectory");
+        assert_eq!(
+            a.particles(),
+            w.particles(),
+            "plane support changed the trajectory"
+        );
+    }
 }
 
 fn engine(c: &mut Criterion) {
@@ -362,7 +391,7 @@ fn engine(c: &mut Criterion) {
         (),
         EQ,
     );
-    paired_observer_check();
+    unused_machinery_checks();
 
     // 3 and 4. Spheres melted from FCC.
     let skip_1m = std::env::var("BONKERS_BENCH_SKIP_1M").is_ok_and(|v| v != "0");

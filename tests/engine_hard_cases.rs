@@ -4,7 +4,7 @@
 
 mod common;
 
-use bonkers::engine::{NeighbourList, Disks, Particle, Rods, SimBox, Simulation, Spheres, Stop};
+use bonkers::engine::{Disks, NeighbourList, Particle, Rods, SimBox, Simulation, Spheres, Stop};
 
 fn relative_drift(e0: f64, e1: f64) -> f64 {
     (e1 - e0).abs() / e0

@@ -91,7 +91,10 @@ fn same_collisions<const D: usize, const PLANES: bool>(
     assert_eq!(lists.len(), collisions as usize);
     for (k, (a, b)) in lists.iter().zip(&brute).enumerate() {
         assert_eq!((a.0, a.1), (b.0, b.1), "collision {k} differs");
-        assert!((a.2 - b.2).abs() <= 1e-6 * a.2.max(1.0), "collision {k}: {a:?} vs {b:?}");
+        assert!(
+            (a.2 - b.2).abs() <= 1e-6 * a.2.max(1.0),
+            "collision {k}: {a:?} vs {b:?}"
+        );
     }
 }
 
@@ -108,10 +111,11 @@ fn fluid<const D: usize>(
     while out.len() < n {
         let pos: [f64; D] =
             std::array::from_fn(|_| 0.5 + (side - 1.0) * rand::RngExt::random::<f64>(&mut rng));
-        let clear = allowed(&pos) && out.iter().all(|q| {
-            let d2: f64 = (0..D).map(|k| (q.pos[k] - pos[k]).powi(2)).sum();
-            d2 > 1.0
-        });
+        let clear = allowed(&pos)
+            && out.iter().all(|q| {
+                let d2: f64 = (0..D).map(|k| (q.pos[k] - pos[k]).powi(2)).sum();
+                d2 > 1.0
+            });
         if clear {
             let vel = std::array::from_fn(|_| common::gaussian(&mut rng));
             out.push(Particle::new(pos, vel, 1.0 + out.len() as f64 % 3.0, 0.5));

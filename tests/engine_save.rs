@@ -4,7 +4,7 @@
 mod common;
 
 use bonkers::engine::{
-    Axis, NeighbourList, Chain, Counts, Disks, FORMAT_VERSION, Observer, PairCollision, Particle,
+    Axis, Chain, Counts, Disks, FORMAT_VERSION, NeighbourList, Observer, PairCollision, Particle,
     Persist, Rods, SaveError, SimBox, Simulation, Snapshot, Spheres, Stop, Wall, WallHit,
 };
 
@@ -180,7 +180,12 @@ fn disks_with_a_plane_continue_bit_identically() {
 #[test]
 fn periodic_spheres_continue_bit_identically() {
     let (whole, halves) = by_collisions(20_000);
-    continues_bit_identically::<3, NeighbourList<3>>(common::fcc(3, 0.3, 13), Some(0.2), whole, halves);
+    continues_bit_identically::<3, NeighbourList<3>>(
+        common::fcc(3, 0.3, 13),
+        Some(0.2),
+        whole,
+        halves,
+    );
 }
 
 /// A small 1D run, saved after some collisions.
@@ -242,7 +247,10 @@ fn another_format_version_is_refused_by_name() {
     let mut bytes = small_save();
     bytes[8..12].copy_from_slice(&other.to_le_bytes());
     let err = load_rods(&bytes).err().unwrap();
-    assert!(matches!(err, SaveError::Version { found } if found == other), "{err:?}");
+    assert!(
+        matches!(err, SaveError::Version { found } if found == other),
+        "{err:?}"
+    );
     let message = err.to_string();
     assert!(
         message.contains(&format!("version {other}"))

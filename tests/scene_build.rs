@@ -1,7 +1,7 @@
 //! Scenes: placement, velocities, the seeds' bundled scenes, and the errors
 //! for impossible requests.
 
-use bonkers::engine::{NeighbourList, Chain, Observer, Simulation, Stop, WallHit};
+use bonkers::engine::{Chain, NeighbourList, Observer, Simulation, Stop, WallHit};
 use bonkers::scene::spec::SceneSpec;
 use bonkers::scene::{Built, build, presets, resolve};
 use rand::SeedableRng;

@@ -21,8 +21,15 @@ use super::vector::{Vector, axis0, dot, norm2, sub};
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) enum Next {
     Nothing,
-    Pair { j: u32, stamp: u32, image: Image },
-    Wall { axis: u8, high: bool },
+    Pair {
+        j: u32,
+        stamp: u32,
+        image: Image,
+    },
+    Wall {
+        axis: u8,
+        high: bool,
+    },
     /// The particle reaches the edge of its neighbourhood.
     Renew,
 }
@@ -362,7 +369,11 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             let v = sub(&q.vel, &p.vel);
             // A plane moves along axis 0 only, and only that part of the
             // other's motion brings them together.
-            let v = if N::PLANES && image == PLANE { axis0(&v) } else { v };
+            let v = if N::PLANES && image == PLANE {
+                axis0(&v)
+            } else {
+                v
+            };
             let sigma = p.radius + q.radius;
             let dt = if D == 1 {
                 line_contact_time(r[0], -v[0], line_side(i, j, image), sigma)
@@ -443,7 +454,10 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
 /// See [`Simulation::degrees_of_freedom`].
 pub fn degrees_of_freedom<const D: usize>(particles: &[Particle<D>], sim_box: &SimBox<D>) -> f64 {
     let movable = particles.iter().filter(|p| !p.is_immovable());
-    let free: usize = movable.clone().map(|p| if p.is_plane() { 1 } else { D }).sum();
+    let free: usize = movable
+        .clone()
+        .map(|p| if p.is_plane() { 1 } else { D })
+        .sum();
     let anchored = particles.iter().any(Particle::is_immovable);
     let conserved = if anchored || movable.count() == 0 {
         0

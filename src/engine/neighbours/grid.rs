@@ -33,7 +33,11 @@ impl<const D: usize> Grid<D> {
         let mut n = [1u32; D];
         for k in 0..D {
             let fit = (sim_box.size[k] / min_width).floor();
-            n[k] = if fit.is_nan() { 1 } else { fit.clamp(1.0, budget) as u32 };
+            n[k] = if fit.is_nan() {
+                1
+            } else {
+                fit.clamp(1.0, budget) as u32
+            };
         }
         let total: f64 = n.iter().map(|&x| x as f64).product();
         if total > budget {
@@ -66,7 +70,9 @@ impl<const D: usize> Grid<D> {
     /// File point `i` (or move it) at position `x`, which lies in the box.
     pub fn place(&mut self, i: usize, x: &Vector<D>) {
         let c = self.coords(x);
-        let cell = (0..D).map(|k| c[k] as usize * self.stride[k]).sum::<usize>() as u32;
+        let cell = (0..D)
+            .map(|k| c[k] as usize * self.stride[k])
+            .sum::<usize>() as u32;
         if self.cell[i] == cell {
             return;
         }

@@ -28,6 +28,8 @@ use crate::engine::vector::{Vector, axis0, dot, norm2, sub};
 /// A list entry packs a particle index and an image code: `j << 5 | image`.
 const IMAGE_BITS: u32 = 5;
 const MAX_PARTICLES: usize = 1 << (32 - IMAGE_BITS);
+/// The shell in ideal-gas mean free paths (tuned on the benchmark systems).
+const SHELL_PER_FREE_PATH: f64 = 1.0;
 
 #[inline(always)]
 fn pack(j: usize, image: Image) -> u32 {
@@ -36,7 +38,10 @@ fn pack(j: usize, image: Image) -> u32 {
 
 #[inline(always)]
 fn unpack(e: u32) -> (usize, Image) {
-    ((e >> IMAGE_BITS) as usize, (e & ((1 << IMAGE_BITS) - 1)) as Image)
+    (
+        (e >> IMAGE_BITS) as usize,
+        (e & ((1 << IMAGE_BITS) - 1)) as Image,
+    )
 }
 
 /// The image of i as seen from j, when j is i's image `image`.
@@ -72,8 +77,8 @@ pub struct NeighbourList<const D: usize, const PLANES: bool = false> {
 
 impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
     /// The shell: the distance a particle may wander from its centre. Wider
-    /// means rarer renewals but longer lists; a fraction of the mean free
-    /// path balances the two. Capped so that periodic axes keep three cells.
+    /// means rarer renewals but longer lists; about a mean free path
+    /// balances the two. Capped so that periodic axes keep three cells.
     fn shell_for(particles: &[Particle<D>], sim_box: &SimBox<D>) -> Result<f64, String> {
         let balls = particles.iter().filter(|p| !p.is_plane());
         let largest = balls.clone().map(|p| p.radius).fold(0.0, f64::max);
@@ -89,9 +94,8 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         };
         let free_path = 1.0 / (std::f64::consts::SQRT_2 * density * cross_section);
         let spacing = density.powf(-1.0 / D as f64);
-        let f: f64 = std::env::var("SHELLF").ok().and_then(|s| s.parse().ok()).unwrap_or(1.0);
-        let mut shell = (f * free_path).clamp(0.1 * sigma, spacing.max(sigma));
-        if !(shell > 0.0) {
+        let mut shell = (SHELL_PER_FREE_PATH * free_path).clamp(0.1 * sigma, spacing.max(sigma));
+        if shell.is_nan() || shell <= 0.0 {
             shell = spacing;
         }
         for k in 0..D {
@@ -261,7 +265,10 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
         }
         let plane = particles.iter().position(Particle::is_plane);
         if plane.is_some() && !PLANES {
-            return Err("this system has a plane (a piston wall); build it with NeighbourList<D, true>".into());
+            return Err(
+                "this system has a plane (a piston wall); build it with NeighbourList<D, true>"
+                    .into(),
+            );
         }
         let shell = Self::shell_for(particles, sim_box)?;
         let largest_radius = particles
@@ -325,7 +332,11 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
             return Some(p.t);
         }
         let root = (b * b - a * c).sqrt();
-        let s = if b <= 0.0 { (root - b) / a } else { -c / (b + root) };
+        let s = if b <= 0.0 {
+            (root - b) / a
+        } else {
+            -c / (b + root)
+        };
         Some(p.t + s)
     }
 
