@@ -36,14 +36,12 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for AllPairs<D, PLANES
         })
     }
 
-    fn for_each_candidate(&self, i: usize, mut f: impl FnMut(usize, Image)) {
-        for j in (0..self.n).filter(|&j| j != i) {
-            if Some(i) == self.plane || Some(j) == self.plane {
-                f(j, PLANE);
-            } else {
-                self.images.iter().for_each(|&image| f(j, image));
-            }
-        }
+    fn candidates(&self, i: usize) -> impl Iterator<Item = (usize, Image)> {
+        (0..self.n).filter(move |&j| j != i).flat_map(move |j| {
+            let with_plane = Some(i) == self.plane || Some(j) == self.plane;
+            let images: &[Image] = if with_plane { &[PLANE] } else { &self.images };
+            images.iter().map(move |&image| (j, image))
+        })
     }
 
     fn next_renewal(&self, _i: usize, _p: &Particle<D>) -> Option<f64> {

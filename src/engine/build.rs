@@ -114,19 +114,14 @@ pub fn check_overlaps<const D: usize, N: Neighbourhood<D>>(
         .map(|c| image_shift(c as u8, &sim_box.size))
         .collect();
     for (i, p) in particles.iter().enumerate() {
-        let mut found = None;
-        neighbours.for_each_candidate(i, |j, image| {
-            if found.is_some() || j < i {
-                return;
-            }
+        let overlapping = neighbours.candidates(i).find_map(|(j, image)| {
             let q = &particles[j];
             let r = separation(&p.pos, &q.pos, image, &shifts, N::PLANES);
             let sigma = p.radius + q.radius;
-            if sigma > 0.0 && norm2(&r) < (sigma * (1.0 - 1e-10)).powi(2) {
-                found = Some((j, norm2(&r).sqrt(), sigma));
-            }
+            (j > i && sigma > 0.0 && norm2(&r) < (sigma * (1.0 - 1e-10)).powi(2))
+                .then(|| (j, norm2(&r).sqrt(), sigma))
         });
-        if let Some((j, d, sigma)) = found {
+        if let Some((j, d, sigma)) = overlapping {
             return fail(format!(
                 "particles {i} and {j} overlap: their centres are {d:.6} apart but their radii add to {sigma}; \
                  place them further apart, use fewer or smaller particles, or grow the packing by compression"

@@ -337,6 +337,9 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         let mut best_t = f64::INFINITY;
         let mut best = Next::Nothing;
         for k in 0..D {
+            if !self.neighbours.can_reach_wall(i, p.vel[k] > 0.0) {
+                continue;
+            }
             if let Some((dt, high)) = wall_time(
                 p.pos[k],
                 p.vel[k],
@@ -362,10 +365,9 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             }
         }
         let x_i = p.position_at(now);
-        let (particles, shifts, stamp) = (&self.particles, &self.shifts, &self.stamp);
-        self.neighbours.for_each_candidate(i, |j, image| {
-            let q = &particles[j];
-            let r = separation(&x_i, &q.position_at(now), image, shifts, N::PLANES);
+        for (j, image) in self.neighbours.candidates(i) {
+            let q = &self.particles[j];
+            let r = separation(&x_i, &q.position_at(now), image, &self.shifts, N::PLANES);
             let v = sub(&q.vel, &p.vel);
             // A plane moves along axis 0 only, and only that part of the
             // other's motion brings them together.
@@ -386,12 +388,12 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                     best_t = t;
                     best = Next::Pair {
                         j: j as u32,
-                        stamp: stamp[j],
+                        stamp: self.stamp[j],
                         image,
                     };
                 }
             }
-        });
+        }
         self.next[i] = best;
         self.queue.set(i, best_t);
     }
@@ -416,7 +418,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         let mut worst: f64 = 0.0;
         for (i, p) in self.particles.iter().enumerate() {
             let x_i = p.position_at(self.now);
-            self.neighbours.for_each_candidate(i, |j, image| {
+            for (j, image) in self.neighbours.candidates(i) {
                 let q = &self.particles[j];
                 let x_j = q.position_at(self.now);
                 let r = separation(&x_i, &x_j, image, &self.shifts, N::PLANES);
@@ -424,7 +426,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 if sigma > 0.0 {
                     worst = worst.max(1.0 - dot(&r, &r).sqrt() / sigma);
                 }
-            });
+            }
         }
         worst
     }

@@ -23,18 +23,27 @@ impl<const D: usize> Neighbourhood<D> for Chain {
     }
 
     #[inline(always)]
-    fn for_each_candidate(&self, i: usize, mut f: impl FnMut(usize, Image)) {
+    fn candidates(&self, i: usize) -> impl Iterator<Item = (usize, Image)> {
         // Images in 1D: 0 = one box to the left, 1 = none, 2 = one box to the right.
-        if i > 0 {
-            f(i - 1, 1);
-        } else if self.periodic && self.n > 1 {
-            f(self.n - 1, 0);
-        }
-        if i + 1 < self.n {
-            f(i + 1, 1);
-        } else if self.periodic && self.n > 1 {
-            f(0, 2);
-        }
+        let wraps = self.periodic && self.n > 1;
+        let left = if i > 0 {
+            Some((i - 1, 1))
+        } else {
+            wraps.then(|| (self.n - 1, 0))
+        };
+        let right = if i + 1 < self.n {
+            Some((i + 1, 1))
+        } else {
+            wraps.then_some((0, 2))
+        };
+        left.into_iter().chain(right)
+    }
+
+    /// Only the end particles can reach a wall: the others have a neighbour
+    /// in the way.
+    #[inline(always)]
+    fn can_reach_wall(&self, i: usize, high: bool) -> bool {
+        if high { i + 1 == self.n } else { i == 0 }
     }
 
     fn next_renewal(&self, _i: usize, _p: &Particle<D>) -> Option<f64> {

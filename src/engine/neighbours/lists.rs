@@ -300,16 +300,13 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
     }
 
     #[inline(always)]
-    fn for_each_candidate(&self, i: usize, mut f: impl FnMut(usize, Image)) {
+    fn candidates(&self, i: usize) -> impl Iterator<Item = (usize, Image)> {
         let list = if PLANES && Some(i) == self.plane {
             &self.plane_list[..]
         } else {
             self.list(i)
         };
-        for &e in list {
-            let (j, image) = unpack(e);
-            f(j, image);
-        }
+        list.iter().map(|&e| unpack(e))
     }
 
     /// When p (particle i) reaches the edge of its neighbourhood.

@@ -63,8 +63,15 @@ pub trait Neighbourhood<const D: usize>: Sized + Clone + Send {
     const PLANES: bool = false;
     /// Index the particles (already validated and, in 1D, sorted).
     fn build(particles: &[Particle<D>], sim_box: &SimBox<D>) -> Result<Self, String>;
-    /// Call `f(j, image)` for every particle j that i could hit before its next renewal.
-    fn for_each_candidate(&self, i: usize, f: impl FnMut(usize, Image));
+    /// Every particle j (as image `image`) that i could hit before its next renewal.
+    fn candidates(&self, i: usize) -> impl Iterator<Item = (usize, Image)>;
+    /// Whether i could reach the wall on the high (or low) side of an axis
+    /// before anything else. Only a chain knows better than "yes": on a line
+    /// only its end particles can.
+    #[inline(always)]
+    fn can_reach_wall(&self, _i: usize, _high: bool) -> bool {
+        true
+    }
     /// When `p` (particle i) next needs its neighbourhood renewed (absolute time).
     fn next_renewal(&self, i: usize, p: &Particle<D>) -> Option<f64>;
     /// Renew particle i's neighbourhood at time `now` (moving `p` there);
