@@ -42,7 +42,11 @@ pub fn place(
         };
         let (n, w) = totals(slots, &cluster);
         let (from, to) = segment.unwrap_or((lo, hi));
-        if w > to - from {
+        let taken = match (segment, blocked) {
+            (None, Some([a, b])) => b.min(hi) - a.max(lo),
+            _ => 0.0,
+        };
+        if w > to - from - taken {
             return Err(format!(
                 "{n} rods of total length {w} do not fit in [{from}, {to}]{}; use fewer or shorter rods or a longer box",
                 if blocked.is_some() {
@@ -56,7 +60,7 @@ pub fn place(
             Some((from, to)) => line_up(slots, &cluster, from, to, rng),
             None => by_rejection(slots, &cluster, (lo, hi), obstacle, rng),
         }
-        .ok_or_else(|| tangled(slots, &cluster, obstacle, names))?;
+        .ok_or_else(|| tangled(slots, &cluster, obstacle, shared, names))?;
         for (&i, xi) in cluster.iter().zip(x) {
             out[i] = [xi];
         }
@@ -158,6 +162,7 @@ fn tangled(
     slots: &[Slot<1>],
     members: &[usize],
     obstacle: Option<[f64; 2]>,
+    shared: bool,
     names: &[String],
 ) -> String {
     let mut regions: Vec<String> = Vec::new();
@@ -169,14 +174,17 @@ fn tangled(
             regions.push(text);
         }
     }
-    let piston = match obstacle {
-        Some([a, b]) => format!(" around the piston at [{a}, {b}]"),
-        None => String::new(),
+    let why = match obstacle {
+        Some([a, b]) if shared => format!("the piston at [{a}, {b}] splits their region"),
+        Some([a, b]) => {
+            format!("their regions overlap without being the same, around the piston at [{a}, {b}]")
+        }
+        None => "their regions overlap without being the same".into(),
     };
     format!(
-        "cannot place the rods of {} at random{piston}: their regions overlap without being the same, \
-         and no exact uniform placement was found in {TRIES} tries; give species that share space the \
-         same region, and keep regions to one side of the piston",
+        "cannot place the rods of {} at random: {why}, and no exact uniform placement was found in \
+         {TRIES} tries; give species that share space the same region, and keep regions to one side \
+         of the piston",
         regions.join(", ")
     )
 }
