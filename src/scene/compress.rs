@@ -11,7 +11,7 @@
 //! grows, which is the elastic rule plus twice the growth rate in the normal
 //! relative velocity. A particle meets a wall (or the edge of its region)
 //! the same way. Collisions add energy, so the velocities are rescaled to
-//! kT = 1 after every N collisions; that keeps the growth rate a fixed
+//! kT = 1 after every 4N collisions; that keeps the growth rate a fixed
 //! fraction of the thermal speed. Positions come out exact to round-off;
 //! the velocities are discarded (the growth rule skews them) and the scene
 //! draws its own.

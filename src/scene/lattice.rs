@@ -15,7 +15,7 @@ use rand::seq::SliceRandom;
 use rand_chacha::ChaCha8Rng;
 
 struct Kind {
-    name: &'static str,
+    name: String,
     /// Sites only where the layer indices add up to an even number.
     centred: bool,
     /// Layer spacing per axis for nearest-neighbour distance 1.
@@ -23,39 +23,15 @@ struct Kind {
 }
 
 fn kind(d: usize, name: Option<&str>) -> Result<Kind, String> {
-    let s3 = 3f64.sqrt();
-    let h = std::f64::consts::FRAC_1_SQRT_2;
     let name = name.unwrap_or(match d {
         1 => "line",
         2 => "hexagonal",
         _ => "fcc",
     });
-    Ok(match (d, name) {
-        (1, "line") => Kind {
-            name: "line",
-            centred: false,
-            layer: [1.0; 3],
-        },
-        (2, "square") => Kind {
-            name: "square",
-            centred: false,
-            layer: [1.0; 3],
-        },
-        (2, "hexagonal") => Kind {
-            name: "hexagonal",
-            centred: true,
-            layer: [0.5, s3 / 2.0, 0.0],
-        },
-        (3, "cubic") => Kind {
-            name: "cubic",
-            centred: false,
-            layer: [1.0; 3],
-        },
-        (3, "fcc") => Kind {
-            name: "fcc",
-            centred: true,
-            layer: [h; 3],
-        },
+    let (centred, layer) = match (d, name) {
+        (1, "line") | (2, "square") | (3, "cubic") => (false, [1.0; 3]),
+        (2, "hexagonal") => (true, [0.5, 3f64.sqrt() / 2.0, 0.0]),
+        (3, "fcc") => (true, [std::f64::consts::FRAC_1_SQRT_2; 3]),
         _ => {
             return Err(format!(
                 "lattice `{name}` is not available in {d}D; use {}",
@@ -66,6 +42,11 @@ fn kind(d: usize, name: Option<&str>) -> Result<Kind, String> {
                 }
             ));
         }
+    };
+    Ok(Kind {
+        name: name.to_string(),
+        centred,
+        layer,
     })
 }
 
