@@ -7,12 +7,12 @@ use bonkers::scene::{Built, build, presets, resolve};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
-fn scene(text: &str) -> SceneSpec {
-    resolve(&toml::from_str(text).expect("scene TOML")).expect("preset")
+fn scene(text: &str) -> Result<SceneSpec, String> {
+    resolve(&toml::from_str(text).expect("scene TOML"))
 }
 
 fn built<const D: usize>(text: &str, seed: u64) -> Result<Built<D>, String> {
-    build::<D>(&scene(text), &mut ChaCha8Rng::seed_from_u64(seed))
+    build::<D>(&scene(text)?, &mut ChaCha8Rng::seed_from_u64(seed))
 }
 
 fn energy<const D: usize>(b: &Built<D>) -> f64 {
@@ -106,8 +106,10 @@ fn mackay_piston_starts_with_about_three_quarters_of_the_energy() {
     assert!(b.particles.windows(2).all(|w| w[0].pos[0] <= w[1].pos[0]));
 }
 
-/// The cradle conserves energy, and the system's momentum changes only by what
-/// the walls give it.
+/// The cradle is MacKay's cradle2.m (walls at 0 and 35, eight rods at 14..21,
+/// masses 4.123, 9.0123 and six 1s, the first two moving left at 2); it
+/// conserves energy, and the system's momentum changes only by what the walls
+/// give it.
 #[test]
 fn mackay_cradle_conserves_energy_and_balances_momentum_at_the_walls() {
     #[derive(Default)]
@@ -118,6 +120,13 @@ fn mackay_cradle_conserves_energy_and_balances_momentum_at_the_walls() {
         }
     }
     let b = built::<1>("preset = \"mackay-cradle\"", 1).unwrap();
+    assert_eq!(b.sim_box.size, [35.0]);
+    let masses: Vec<f64> = b.particles.iter().map(|p| p.mass()).collect();
+    assert_eq!(masses, [4.123, 9.0123, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0]);
+    let xs: Vec<f64> = b.particles.iter().map(|p| p.pos[0]).collect();
+    assert_eq!(xs, [14.0, 15.0, 16.0, 17.0, 18.0, 19.0, 20.0, 21.0]);
+    let vs: Vec<f64> = b.particles.iter().map(|p| p.vel[0]).collect();
+    assert_eq!(vs, [-2.0, -2.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
     let e0 = energy(&b);
     let p0: f64 = b.particles.iter().map(|q| q.vel[0] / q.inv_mass).sum();
     let mut sim: Simulation<1, Chain, WallMomentum> =
@@ -191,7 +200,7 @@ fn imperial_scenes_do_what_the_seed_says() {
 fn every_preset_builds_and_runs() {
     for p in presets::list() {
         let text = format!("preset = \"{}\"", p.name);
-        let d = scene(&text).dimension.unwrap();
+        let d = scene(&text).unwrap().dimension().unwrap();
         let ok = match d {
             1 => built::<1>(&text, 7)
                 .and_then(|b| {

@@ -1,11 +1,17 @@
 //! Scenes: the physical setup a run starts from.
 
 pub mod build;
+pub mod compress;
+pub mod lattice;
+pub mod piston;
 pub mod placement;
 pub mod presets;
 pub mod resolve;
+pub mod rods;
+pub mod space;
 pub mod spec;
 pub mod velocities;
 
 pub use build::{Built, build};
+pub use compress::Preparation;
 pub use resolve::resolve;

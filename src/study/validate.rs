@@ -147,7 +147,9 @@ fn scene(s: &SceneSpec) -> Check {
                 Some("give each species its own name"),
             );
         }
-        non_negative(&key("radius"), sp.radius)?;
+        for r in sp.radius.bounds() {
+            non_negative(&key("radius"), r)?;
+        }
         match sp.mass {
             Mass::Fixed(m) => positive(&key("mass"), m)?,
             Mass::Range([lo, hi]) => {
