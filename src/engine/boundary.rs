@@ -63,6 +63,10 @@ impl<const D: usize> SimBox<D> {
         self.size.iter().product()
     }
 
+    pub fn all_periodic(&self) -> bool {
+        self.axes.iter().all(Axis::is_periodic)
+    }
+
     pub fn has_thermal_walls(&self) -> bool {
         self.axes.iter().any(|a| {
             [false, true]

@@ -19,7 +19,7 @@ pub struct Built<const D: usize> {
     pub sim_box: SimBox<D>,
     /// Species names by species index; the piston, if any, is the last.
     pub species: Vec<String>,
-    /// Index of the piston particle (1D).
+    /// Index of the piston: a particle in 1D, a plane (a wall along x) above.
     pub piston: Option<usize>,
     /// What it cost to prepare the positions, when that took a simulation
     /// of its own (compression); None for direct placements.
@@ -42,8 +42,10 @@ pub fn build<const D: usize>(spec: &SceneSpec, rng: &mut ChaCha8Rng) -> Result<B
     let species = species_list(spec)?;
     let names: Vec<String> = species.iter().map(|s| s.name.clone()).collect();
     let obstacle = match &spec.piston {
-        Some(_) if D != 1 => {
-            return Err("a piston is available in 1D scenes only in this version (a movable wall in 2D/3D is planned)".into());
+        Some(_) if D > 1 && sim_box.axes[0].is_periodic() => {
+            return Err(
+                "a piston slides along x between walls, but axis 0 is periodic; make it \"walls\"".into(),
+            );
         }
         Some(ps) => Some(piston::extent(ps, sim_box.size[0])?),
         None => None,
@@ -80,7 +82,18 @@ pub fn build<const D: usize>(spec: &SceneSpec, rng: &mut ChaCha8Rng) -> Result<B
                 .map(|[x]| std::array::from_fn(|_| x))
                 .collect()
         }
-        Placement::Random => placement::random(&slots, &space, rng)?,
+        Placement::Random => match obstacle {
+            // Beside a piston wall each gas keeps to its own side.
+            Some(extent) => placement::random(&around(&slots, extent, &names)?, &space, rng)?,
+            None => placement::random(&slots, &space, rng)?,
+        },
+        Placement::Compress { .. } if obstacle.is_some() => {
+            return Err(
+                "compression cannot grow particles around a piston wall; place the gases at random or \
+                 on a lattice on either side of it"
+                    .into(),
+            );
+        }
         Placement::Lattice { lattice } => {
             let clear = match obstacle {
                 Some(extent) => around(&slots, extent, &names)?,
@@ -143,23 +156,24 @@ pub fn build<const D: usize>(spec: &SceneSpec, rng: &mut ChaCha8Rng) -> Result<B
         .collect();
     let mut names = names;
     if let (Some(ps), Some(v)) = (&spec.piston, piston_v) {
-        let mut pos = [0.0; D];
-        pos[0] = ps.position * sim_box.size[0];
-        let mut vel = [0.0; D];
-        vel[0] = v;
+        let x = ps.position * sim_box.size[0];
         names.push(PISTON.into());
-        particles.push(
-            Particle::new(pos, vel, ps.mass, ps.radius).with_species((names.len() - 1) as u16),
-        );
+        let species = (names.len() - 1) as u16;
+        // On a line the piston is a rod; above, a wall spanning the box.
+        particles.push(if D == 1 {
+            Particle::new([x; D], [v; D], ps.mass, ps.radius).with_species(species)
+        } else {
+            Particle::plane(x, v, ps.mass, ps.radius).with_species(species)
+        });
     }
-    let mut piston = None;
     if D == 1 {
         // The engine's chain needs left-to-right order.
         particles.sort_by(|a, b| a.pos[0].total_cmp(&b.pos[0]));
-        piston = particles
-            .iter()
-            .position(|p| spec.piston.is_some() && p.species as usize == names.len() - 1);
     }
+    let piston = spec
+        .piston
+        .as_ref()
+        .and_then(|_| particles.iter().position(|p| p.species as usize == names.len() - 1));
     Ok(Built {
         particles,
         sim_box,
