@@ -1,12 +1,16 @@
 //! `study run`: descriptor -> plan -> parallel runs -> tables -> report.
 
+pub mod analyses;
+pub mod check;
 pub mod cli;
 pub mod descriptor;
 pub mod descriptor_types;
 pub mod errors;
+pub mod explain;
 pub mod locate;
 pub mod manifest;
 pub mod output;
+pub mod overrides;
 pub mod pipeline;
 pub mod plan;
 pub mod plan_types;
@@ -16,3 +20,5 @@ pub mod runner;
 pub mod seeds;
 pub mod store;
 pub mod validate;
+pub mod validate_observe;
+pub mod validate_scene;
