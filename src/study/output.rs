@@ -18,6 +18,9 @@ pub struct RunOutput {
     pub collisions: u64,
     /// Wall-clock seconds of this run (excluded from bit-identity checks).
     pub wall_seconds: f64,
+    /// CPU seconds of the thread that ran it (NaN where the platform does
+    /// not tell; excluded from bit-identity checks).
+    pub cpu_seconds: f64,
 }
 
 /// One observable sampled over time.

@@ -91,6 +91,7 @@ pub fn fake(spec: &RunSpec) -> anyhow::Result<RunOutput> {
         events: s % 1000 + 10,
         collisions: s % 500 + 5,
         wall_seconds: 0.0,
+        cpu_seconds: 0.0,
     })
 }
 
