@@ -7,6 +7,7 @@ pub mod cpu_time;
 pub mod descriptor;
 pub mod descriptor_types;
 pub mod errors;
+pub mod estimate;
 pub mod explain;
 pub mod locate;
 pub mod lock;
