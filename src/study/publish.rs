@@ -1,5 +1,5 @@
 //! A finished study's outputs are published as one set. Everything is written
-//! into a staging folder `OUT/.staging-<pid>/` and synced; then the previous
+//! into a staging folder `OUT/.staging-<pid>/` and synced to disk; then the previous
 //! `manifest.json` is removed, the new files are moved into OUT, outputs of
 //! an earlier study that this one did not make are deleted, and the new
 //! `manifest.json`, which lists the set, comes last. So OUT never holds a

@@ -12,8 +12,11 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 
-/// Write `bytes` to `path` via a temporary sibling, flushed to disk, and a
-/// rename: a reader, or a crash, sees the old file or the new one, never half.
+/// Write `bytes` to `path` via a temporary sibling and a rename: a reader
+/// sees the old file or the new one, never half. Atomic, not synced: a
+/// study's outputs are synced once, together, when they are published
+/// (`publish.rs`); a run file that a power cut tore does not parse, so it is
+/// simply run again, and a sync per run would cost more than many runs.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> anyhow::Result<()> {
     write_via_temp(path, |file| {
         file.write_all(bytes)?;
@@ -29,7 +32,7 @@ pub fn write_parquet(path: &Path, df: &mut DataFrame) -> anyhow::Result<()> {
     })
 }
 
-/// `write` fills a fresh temporary file, which is synced and renamed to `path`.
+/// `write` fills a fresh temporary file, which is renamed to `path`.
 fn write_via_temp(
     path: &Path,
     write: impl FnOnce(&mut File) -> anyhow::Result<()>,
@@ -37,11 +40,7 @@ fn write_via_temp(
     let tmp = temp_name(path);
     let result = File::create(&tmp)
         .map_err(anyhow::Error::from)
-        .and_then(|mut file| {
-            write(&mut file)?;
-            file.sync_all()?;
-            Ok(())
-        })
+        .and_then(|mut file| write(&mut file))
         .with_context(|| format!("cannot write {}", tmp.display()))
         .and_then(|()| {
             std::fs::rename(&tmp, path)
@@ -50,8 +49,7 @@ fn write_via_temp(
     if result.is_err() {
         let _ = std::fs::remove_file(&tmp);
     }
-    result?;
-    sync_dir(path.parent().unwrap_or(Path::new(".")))
+    result
 }
 
 /// Make renames and removals in `dir` durable (Unix; elsewhere a rename is
