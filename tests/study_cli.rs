@@ -85,6 +85,28 @@ fn help_and_list_exit_0() {
     let (code, out, _) = study(&["list"]);
     assert_eq!(code, 0);
     assert!(out.contains("studies") && out.contains("scenes"), "{out}");
+    // One line per observable and analysis, the analysis with its options.
+    for line in [
+        "  scalars    wall_heat ",
+        "  histograms scaled_velocity_x ",
+        "  quickstart ",
+    ] {
+        assert!(out.contains(line), "{line:?} in\n{out}");
+    }
+    assert!(
+        out.lines().any(|l| l.starts_with("  piston ")
+            && l.contains("window_periods (a number > 0, default 4)")),
+        "{out}"
+    );
+    // From another directory it still finds the bundled studies.
+    let elsewhere = tempfile::tempdir().unwrap();
+    let listed = Command::new(env!("CARGO_BIN_EXE_study"))
+        .arg("list")
+        .current_dir(elsewhere.path())
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&listed.stdout);
+    assert!(text.contains("  quickstart "), "{text}");
 }
 
 /// A scene from a preset still gets an estimate (the particle count comes
