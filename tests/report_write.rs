@@ -83,6 +83,8 @@ fn swept_runs() -> Vec<(RunSpec, RunOutput)> {
                     events: 5000,
                     collisions: 4000 + id * 10,
                     wall_seconds: 0.01 * (1.0 + mass.log10()),
+                    cpu_seconds: 0.05,
+                    prepare_seconds: 0.0,
                 };
                 runs.push((spec, out));
             }
@@ -111,6 +113,9 @@ fn meta(failed: Vec<(u64, String)>) -> ReportMeta {
         finished: "2026-01-01T00:00:03Z".into(),
         version: "0.1.0".into(),
         total_wall_seconds: 1.5,
+        runs_wall_seconds: 0.6,
+        resumed_runs: 0,
+        planned_runs: 24,
         failed_runs: failed,
     }
 }
@@ -225,6 +230,15 @@ fn full_report_writes_every_file() {
     assert!(md.contains("2 of 3"), "NaN results are visible in n");
     assert!(md.contains("## Space-time diagram"));
     assert!(md.contains("runs.parquet") && md.contains("summary.parquet"));
+    // Cost: CPU seconds of the runs (24 x 0.05 s) against the time spent
+    // running them (0.6 s), not against their own sum.
+    assert!(md.contains("| CPU s |"), "{md}");
+    assert!(
+        md.contains(
+            "The runs took 1.2 CPU seconds in 0.6 s of wall time on 2 threads (parallel speed-up 2)"
+        ),
+        "{md}"
+    );
 
     let html = std::fs::read_to_string(dir.join("index.html")).expect("html");
     assert!(!html.contains("http"), "no external references");

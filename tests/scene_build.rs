@@ -241,8 +241,9 @@ fn impossible_requests_are_clear_errors() {
     )
     .unwrap_err();
     assert!(err.contains("mass"), "{err}");
+    // A gas on both sides of a 2D piston wall: say which side it belongs on.
     let err = built::<2>("dimension = 2\nbox = [10.0, 10.0]\nspecies = [{ name = \"a\", count = 1 }]\npiston = { mass = 10.0 }\n", 1).unwrap_err();
-    assert!(err.contains("1D"), "{err}");
+    assert!(err.contains("inside the region of `a`"), "{err}");
     let err =
         resolve(&toml::from_str::<SceneSpec>("preset = \"mackay-pistn\"").unwrap()).unwrap_err();
     assert!(err.contains("mackay-piston"), "{err}");
@@ -252,4 +253,27 @@ fn impossible_requests_are_clear_errors() {
         .unwrap_err()
         .to_string();
     assert!(err.contains("particles 0 and 1 overlap"), "{err}");
+}
+
+/// In 2D and 3D the piston is a wall along x: one plane, each gas on its side.
+#[test]
+fn a_2d_piston_is_a_wall_between_two_gases() {
+    let scene = "dimension = 2\nbox = [20.0, 10.0]\nspecies = [\n  { name = \"left\", count = 30, region = { from = [0.0, 0.0], to = [0.5, 1.0] } },\n  { name = \"right\", count = 30, region = { from = [0.5, 0.0], to = [1.0, 1.0] } },\n]\npiston = { mass = 50.0, radius = 0.25, energy = 3.0 }\nvelocities = { kind = \"maxwell\", temperature = 2.0 }\n";
+    let b = built::<2>(scene, 4).unwrap();
+    let k = b.piston.expect("a piston");
+    let wall = &b.particles[k];
+    assert!(wall.is_plane() && wall.vel[1] == 0.0);
+    assert_eq!((wall.pos[0], 1.0 / wall.inv_mass), (10.0, 50.0));
+    // energy = 3 kT at kT = 2.
+    assert!((wall.kinetic_energy() - 6.0).abs() < 1e-12);
+    for p in b.particles.iter().filter(|p| !p.is_plane()) {
+        let left = b.species[p.species as usize] == "left";
+        assert_eq!(p.pos[0] < 10.0, left);
+        assert!((p.pos[0] - 10.0).abs() >= 0.25 + p.radius);
+    }
+    let mut sim: bonkers::engine::WithPlane<2, ()> =
+        Simulation::new(b.particles, b.sim_box, (), 1).unwrap();
+    let e0 = sim.kinetic_energy();
+    sim.run(Stop::Time(100.0));
+    assert!((sim.kinetic_energy() - e0).abs() < 1e-11 * e0);
 }

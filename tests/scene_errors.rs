@@ -259,10 +259,22 @@ fn bad_pistons() {
         &format!("{s}piston = {{ mass = 5.0, energy = -1.0 }}\n"),
         &["piston.energy", ">= 0"],
     );
+    // In 2D the piston is a wall: each gas keeps to one side of it, and it
+    // slides between walls, not across a periodic boundary.
     assert_says(
         2,
         "box = [10.0, 10.0]\nspecies = [{ name = \"a\", count = 2 }]\npiston = { mass = 5.0 }\n",
-        &["piston", "1D"],
+        &["piston", "region of `a`", "either side"],
+    );
+    assert_says(
+        2,
+        "box = [10.0, 10.0]\nboundary = [\"periodic\", \"walls\"]\nspecies = [{ name = \"a\", count = 2, region = { from = [0.0, 0.0], to = [0.4, 1.0] } }]\npiston = { mass = 5.0 }\n",
+        &["piston", "periodic", "walls"],
+    );
+    assert_says(
+        2,
+        "box = [10.0, 10.0]\nspecies = [{ name = \"a\", count = 2, region = { from = [0.0, 0.0], to = [0.4, 1.0] } }]\nplacement = { kind = \"compress\" }\npiston = { mass = 5.0 }\n",
+        &["compress", "piston"],
     );
     // A lattice cannot straddle the piston.
     assert_says(

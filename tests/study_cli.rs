@@ -85,4 +85,84 @@ fn help_and_list_exit_0() {
     let (code, out, _) = study(&["list"]);
     assert_eq!(code, 0);
     assert!(out.contains("studies") && out.contains("scenes"), "{out}");
+    // One line per observable and analysis, the analysis with its options.
+    for line in [
+        "  scalars    wall_heat ",
+        "  histograms scaled_velocity_x ",
+        "  quickstart ",
+    ] {
+        assert!(out.contains(line), "{line:?} in\n{out}");
+    }
+    assert!(
+        out.lines().any(|l| l.starts_with("  piston ")
+            && l.contains("window_periods (a number > 0, default 4)")),
+        "{out}"
+    );
+    // From another directory it still finds the bundled studies.
+    let elsewhere = tempfile::tempdir().unwrap();
+    let listed = Command::new(env!("CARGO_BIN_EXE_study"))
+        .arg("list")
+        .current_dir(elsewhere.path())
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&listed.stdout);
+    assert!(text.contains("  quickstart "), "{text}");
+}
+
+/// A scene from a preset still gets an estimate (the particle count comes
+/// from the resolved scene), with collisions and time.
+#[test]
+fn validate_estimates_collisions_and_time_for_preset_scenes() {
+    let (code, out, _) = study(&["validate", "studies/quickstart.toml"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("runs: 16"), "{out}");
+    assert!(out.contains("estimated collisions: ~"), "{out}");
+    assert!(out.contains("estimated time: ~"), "{out}");
+    assert!(out.contains("an estimate"), "{out}");
+    assert!(!out.contains("unknown"), "{out}");
+}
+
+/// On the real engine: a resumed study says what it reused, reran and
+/// removed, in one line; plain progress lines carry an ETA.
+#[test]
+fn resuming_says_what_it_reuses_reruns_and_removes() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = write_descriptor(dir.path(), PISTON);
+    let out = dir.path().join("out");
+    let run = |extra: &[&str]| {
+        let mut args = vec![
+            "run",
+            file.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        args.extend(extra);
+        let (code, _, err) = study(&args);
+        assert_eq!(code, 0, "{err}");
+        err
+    };
+    let err = run(&[]);
+    assert!(
+        err.contains("study: 18/18 runs,") && err.contains("ETA done"),
+        "{err}"
+    );
+    let err = run(&["--replicas", "2"]);
+    assert!(
+        err.contains(
+            "study: resuming 12 saved runs; removed 6 saved runs that are not in this plan"
+        ),
+        "{err}"
+    );
+    write_descriptor(
+        dir.path(),
+        &PISTON.replace("duration = 100.0", "duration = 50.0"),
+    );
+    let err = run(&[]);
+    assert!(
+        err.contains(
+            "study: 12 saved runs were made by another descriptor or bonkers version and run again"
+        ),
+        "{err}"
+    );
+    assert!(err.contains("(18 run now, 0 resumed, 0 failed)"), "{err}");
 }

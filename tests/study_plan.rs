@@ -47,6 +47,11 @@ fn zip_pairs_values() {
     let text = with_sweep(
         "[sweep]\nmode = \"zip\"\n[sweep.parameters]\n\"scene.piston.mass\" = [1.0, 2.0, 3.0]\n\"run.duration\" = [10.0, 20.0, 30.0]\n",
     );
+    // (without the [quick] sweep of two masses, which zip would refuse)
+    let text = text.replace(
+        "\"sweep.parameters.scene.piston.mass\" = [1.0, 100.0]\n",
+        "",
+    );
     let loaded = parse("z.toml", &text).unwrap();
     let specs = plan(&loaded).unwrap();
     assert_eq!(count(&loaded), (3, 9));
@@ -142,4 +147,49 @@ fn quick_and_replicas_overrides() {
     let r = with_replicas(&q, 5).unwrap();
     assert_eq!(plan(&r).unwrap().len(), 20);
     assert!(r.text_as_run().contains("replicas = 5"));
+}
+
+/// Seeds come from the point's values, not its index: a value inserted into
+/// a sweep leaves every other point's seeds as they were.
+#[test]
+fn inserting_a_sweep_value_keeps_the_other_points_seeds() {
+    let seeds = |text: &str| -> std::collections::HashMap<String, Vec<u64>> {
+        let mut by_point = std::collections::HashMap::new();
+        for s in plan(&parse("p.toml", text).unwrap()).unwrap() {
+            by_point
+                .entry(format!("{:?}", s.params))
+                .or_insert_with(Vec::new)
+                .push(s.seed);
+        }
+        by_point
+    };
+    let before = seeds(PISTON);
+    let after = seeds(&PISTON.replace("[1.0, 10.0, 100.0]", "[1.0, 3.0, 10.0, 100.0]"));
+    assert_eq!((before.len(), after.len()), (6, 8));
+    for (point, s) in &before {
+        assert_eq!(after.get(point), Some(s), "{point}");
+    }
+    // Point (mass 10, count 5) moved from id 2 to id 4; its seeds stayed.
+    let id_of = |text: &str| {
+        plan(&parse("p.toml", text).unwrap())
+            .unwrap()
+            .into_iter()
+            .find(|s| {
+                s.params[0].1 == toml::Value::Float(10.0)
+                    && s.params[1].1 == toml::Value::Integer(5)
+            })
+            .map(|s| (s.point_id, s.seed))
+            .unwrap()
+    };
+    let (id_before, seed_before) = id_of(PISTON);
+    let (id_after, seed_after) =
+        id_of(&PISTON.replace("[1.0, 10.0, 100.0]", "[1.0, 3.0, 10.0, 100.0]"));
+    assert_eq!((id_before, id_after), (2, 4));
+    assert_eq!(seed_before, seed_after);
+    // Replicas of a point get different seeds; more replicas keep the first ones.
+    let three = seeds(PISTON);
+    let five = seeds(&PISTON.replace("replicas = 3", "replicas = 5"));
+    for (point, s) in &three {
+        assert_eq!(&five[point][..3], &s[..]);
+    }
 }

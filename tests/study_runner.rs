@@ -3,14 +3,41 @@
 
 mod study_common;
 
+use bonkers::study::descriptor::parse;
 use bonkers::study::errors::StudyError;
 use bonkers::study::pipeline::{StudyOptions, run_study};
+use bonkers::study::plan::plan;
 use bonkers::study::progress::ProgressMode;
+use bonkers::study::runner::run_file;
 use bonkers::study::store::read_parquet;
 use polars::prelude::DataFrame;
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use study_common::{Interrupting, PISTON, fake, write_descriptor};
+
+/// A simulator that counts its calls.
+struct Counting(AtomicUsize);
+
+impl Counting {
+    fn new() -> Self {
+        Counting(AtomicUsize::new(0))
+    }
+    fn simulate(
+        &self,
+        spec: &bonkers::study::plan_types::RunSpec,
+    ) -> anyhow::Result<bonkers::study::output::RunOutput> {
+        self.0.fetch_add(1, Ordering::SeqCst);
+        fake(spec)
+    }
+    /// Calls since the last `take`.
+    fn take(&self) -> usize {
+        self.0.swap(0, Ordering::SeqCst)
+    }
+}
+
+fn run_files(out: &Path) -> usize {
+    std::fs::read_dir(out.join("runs")).unwrap().count()
+}
 
 fn options(out: &Path, threads: usize) -> StudyOptions {
     StudyOptions {
@@ -25,7 +52,7 @@ fn options(out: &Path, threads: usize) -> StudyOptions {
     }
 }
 
-/// Every table of `dir` without the wall-clock columns, which legitimately vary.
+/// Every table of `dir` without the timing columns, which legitimately vary.
 fn tables(dir: &Path) -> Vec<(String, DataFrame)> {
     [
         "runs.parquet",
@@ -36,7 +63,7 @@ fn tables(dir: &Path) -> Vec<(String, DataFrame)> {
     .iter()
     .map(|name| {
         let mut df = read_parquet(&dir.join(name)).unwrap();
-        for col in ["wall_seconds", "seconds"] {
+        for col in ["wall_seconds", "cpu_seconds", "prepare_seconds"] {
             if df.column(col).is_ok() {
                 df = df.drop(col).unwrap();
             }
@@ -110,6 +137,8 @@ fn runs_table_has_the_promised_columns() {
             "events",
             "collisions",
             "wall_seconds",
+            "cpu_seconds",
+            "prepare_seconds",
             "status"
         ]
     );
@@ -180,8 +209,9 @@ fn an_interrupted_study_resumes_with_only_the_missing_runs() {
     assert_same(&tables(&reference), &tables(&out));
 
     // Deleted run files are redone, and nothing else.
+    let specs = plan(&parse("s.toml", PISTON).unwrap()).unwrap();
     for id in [0, 7] {
-        std::fs::remove_file(out.join("runs").join(format!("run-{id}.json"))).unwrap();
+        std::fs::remove_file(run_file(&out, specs[id].seed)).unwrap();
     }
     calls.store(0, Ordering::SeqCst);
     run_study(&file, &options(&out, 2), &counting, &AtomicBool::new(false)).unwrap();
@@ -268,4 +298,157 @@ fn nan_and_infinite_results_survive_the_run_files() {
     assert!(back.output.scalars[0].1.is_nan());
     assert_eq!(back.output.scalars[1].1, f64::INFINITY);
     assert_eq!(back.output.scalars[2].1.to_bits(), (0.1f64 + 0.2).to_bits());
+}
+
+/// Saved runs are found by their seed, which depends on the point's values
+/// and the replica only: more replicas, an inserted sweep value or a new
+/// description reuse every run already done; runs no longer planned are removed.
+#[test]
+fn replicas_sweep_values_and_descriptions_reuse_saved_runs() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = write_descriptor(dir.path(), PISTON);
+    let out = dir.path().join("out");
+    let stop = AtomicBool::new(false);
+    let counting = Counting::new();
+    let simulate = |s: &_| counting.simulate(s);
+    run_study(&file, &options(&out, 2), &simulate, &stop).unwrap();
+    assert_eq!(counting.take(), 18);
+    let reference = tables(&out);
+
+    let mut more = options(&out, 2);
+    more.replicas = Some(5);
+    let outcome = run_study(&file, &more, &simulate, &stop).unwrap();
+    assert_eq!((counting.take(), outcome.resumed), (6 * 2, 18));
+    assert_eq!(run_files(&out), 30);
+
+    // Back to 3 replicas: nothing runs, the two extra replicas' files go,
+    // and the tables are those of the first study.
+    run_study(&file, &options(&out, 2), &simulate, &stop).unwrap();
+    assert_eq!(counting.take(), 0);
+    assert_eq!(run_files(&out), 18);
+    assert_same(&reference, &tables(&out));
+
+    // A new mass between the others: only its points run.
+    write_descriptor(
+        dir.path(),
+        &PISTON
+            .replace("[1.0, 10.0, 100.0]", "[1.0, 3.0, 10.0, 100.0]")
+            .replace(
+                "Piston frequency against piston mass",
+                "Another description",
+            ),
+    );
+    let outcome = run_study(&file, &options(&out, 2), &simulate, &stop).unwrap();
+    assert_eq!((counting.take(), outcome.resumed), (2 * 3, 18));
+}
+
+/// A finished study's out dir holds its outputs and nothing older: a rerun
+/// that no longer makes series or histograms removes theirs; the manifest
+/// lists exactly the files beside it.
+#[test]
+fn outputs_of_an_earlier_study_do_not_survive_a_new_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = write_descriptor(dir.path(), PISTON);
+    let out = dir.path().join("out");
+    let stop = AtomicBool::new(false);
+    run_study(&file, &options(&out, 2), &fake, &stop).unwrap();
+    for f in [
+        "series.parquet",
+        "histograms.parquet",
+        "series_piston_x.svg",
+        "hist_v.svg",
+    ] {
+        assert!(out.join(f).is_file(), "{f}");
+    }
+    let scalars_only = |s: &bonkers::study::plan_types::RunSpec| {
+        let mut o = fake(s)?;
+        o.series.clear();
+        o.histograms.clear();
+        Ok(o)
+    };
+    let mut fresh = options(&out, 2);
+    fresh.fresh = true;
+    run_study(&file, &fresh, &scalars_only, &stop).unwrap();
+    for f in [
+        "series.parquet",
+        "histograms.parquet",
+        "series_piston_x.svg",
+        "hist_v.svg",
+    ] {
+        assert!(!out.join(f).exists(), "{f} is stale");
+    }
+    let manifest: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("manifest.json")).unwrap()).unwrap();
+    let listed: Vec<String> = serde_json::from_value(manifest["outputs"].clone()).unwrap();
+    let mut present: Vec<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .flatten()
+        .filter(|e| e.path().is_file())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| !n.starts_with('.'))
+        .collect();
+    present.sort();
+    assert_eq!(listed, present);
+    assert!(listed.contains(&"runs.parquet".to_string()));
+}
+
+#[test]
+fn a_second_study_on_the_same_out_dir_fails_clearly() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = write_descriptor(dir.path(), PISTON);
+    let out = dir.path().join("out");
+    std::fs::create_dir_all(&out).unwrap();
+    let held = bonkers::study::lock::OutLock::acquire(&out).unwrap();
+    let err = run_study(&file, &options(&out, 2), &fake, &AtomicBool::new(false)).unwrap_err();
+    assert_eq!(err.exit_code(), 1);
+    let msg = err.to_string();
+    assert!(msg.contains("another `study run`"), "{msg}");
+    assert!(
+        msg.contains(&format!("process {}", std::process::id())),
+        "{msg}"
+    );
+    assert!(!out.join("runs.parquet").exists());
+    drop(held);
+    run_study(&file, &options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
+}
+
+/// What a killed run leaves (a staging folder, temporary files of an older
+/// or this version) is removed by the next.
+#[test]
+fn leftovers_of_a_killed_run_are_cleaned() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = write_descriptor(dir.path(), PISTON);
+    let out = dir.path().join("out");
+    std::fs::create_dir_all(out.join("runs")).unwrap();
+    std::fs::create_dir_all(out.join(".staging-4000000")).unwrap();
+    let leftovers = [
+        out.join(".staging-4000000").join("runs.parquet"),
+        out.join(".summary.parquet.4000000-3.tmp"),
+        out.join("report.md.tmp"),
+        out.join("runs").join(".run-17.json.4000000-0.tmp"),
+        out.join("runs").join("run-5.json.tmp"),
+    ];
+    for f in &leftovers {
+        std::fs::write(f, "partial").unwrap();
+    }
+    run_study(&file, &options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
+    for f in &leftovers {
+        assert!(!f.exists(), "{} left", f.display());
+    }
+    assert!(!out.join(".staging-4000000").exists());
+    assert_eq!(run_files(&out), 18);
+}
+
+#[test]
+fn quick_studies_default_to_their_own_out_dir() {
+    use bonkers::study::pipeline::default_out_dir;
+    let loaded = parse("s.toml", PISTON).unwrap();
+    assert_eq!(
+        default_out_dir(&loaded, false),
+        Path::new("reports/piston-test")
+    );
+    assert_eq!(
+        default_out_dir(&loaded, true),
+        Path::new("reports/piston-test-quick")
+    );
 }

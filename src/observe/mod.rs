@@ -140,6 +140,11 @@ pub const CATALOGUE: &[(&str, &str, &str)] = &[
         "time-averaged kT (needs sampling)",
     ),
     (
+        "scalars",
+        "wall_heat",
+        "energy each wall gave the particles over the run (heat_in.axis<k>.<low|high>; needs thermal walls)",
+    ),
+    (
         "histograms",
         "scaled_velocity_x",
         "sqrt(m) v_x of every particle at every sample, in units of sqrt(kT)",

@@ -34,7 +34,8 @@ pub fn axis_label(name: &str) -> String {
         "x" => "position x [σ]",
         "mixing" | "mixing_index" => "mixing index",
         "collisions" => "pair collisions",
-        "wall_seconds" | "seconds" => "CPU time [s]",
+        "wall_seconds" => "wall time [s]",
+        "cpu_seconds" | "seconds" => "CPU time [s]",
         _ => return fallback(name),
     };
     known.to_string()

@@ -106,16 +106,17 @@ fn what_was_run(md: &mut String, inp: &Inputs) {
     if let Some(s) = run.sample_every {
         length.push(format!("sampled every {}", num(s)));
     }
+    let planned = inp.meta.planned_runs.max(inp.runs.len());
     let seeds = inp.runs.iter().map(|(s, _)| s.seed);
     let (lo, hi) = seeds.fold((u64::MAX, 0), |(lo, hi), s| (lo.min(s), hi.max(s)));
     let _ = writeln!(
         md,
         "{} points × {} replicas = {} runs (each: {}). Study seed {}; every run has its \
-         own seed{}, derived from (study seed, point, replica): the `seed` column of \
-         `runs.parquet`.\n",
-        inp.points.len(),
+         own seed{}, derived from (study seed, the point's swept values, replica): the `seed` \
+         column of `runs.parquet`.\n",
+        planned / d.study.replicas.max(1) as usize,
         d.study.replicas,
-        inp.runs.len(),
+        planned,
         if length.is_empty() {
             "as the scene says".into()
         } else {
@@ -195,16 +196,31 @@ fn theory_table(md: &mut String, inp: &Inputs) {
     md.push('\n');
 }
 
+/// The cost behind each point: CPU seconds of the threads that ran its runs
+/// (wall seconds of the runs where the platform does not report CPU time),
+/// collisions, and the rate.
 fn cost(md: &mut String, inp: &Inputs) {
     md.push_str("## Cost\n\n");
+    let cpu_known = inp.runs.iter().all(|(_, o)| o.cpu_seconds.is_finite());
+    let seconds = |o: &RunOutput| {
+        finite_or_zero(if cpu_known {
+            o.cpu_seconds
+        } else {
+            o.wall_seconds
+        })
+    };
     let mut per: BTreeMap<u64, (usize, f64, u64)> = BTreeMap::new();
     for (s, o) in inp.runs {
         let e = per.entry(s.point_id).or_default();
         e.0 += 1;
-        e.1 += finite_or_zero(o.wall_seconds);
+        e.1 += seconds(o);
         e.2 += o.collisions;
     }
-    md.push_str("| point | parameters | runs | CPU s | collisions | collisions / s |\n");
+    let unit = if cpu_known { "CPU s" } else { "run wall s" };
+    let _ = writeln!(
+        md,
+        "| point | parameters | runs | {unit} | collisions | collisions / {unit} |"
+    );
     md.push_str("|---:|---|---:|---:|---:|---:|\n");
     let (mut runs, mut secs, mut colls) = (0, 0.0, 0);
     for (id, (n, s, c)) in &per {
@@ -225,15 +241,34 @@ fn cost(md: &mut String, inp: &Inputs) {
         count(colls),
         rate(colls, secs)
     );
-    let wall = inp.meta.total_wall_seconds;
-    if wall > 0.0 && secs > 0.0 {
+    if !cpu_known {
+        md.push_str(
+            "CPU time is not measured on this platform: the seconds are each run's wall time.\n\n",
+        );
+    }
+    let m = inp.meta;
+    let what = if cpu_known { "CPU" } else { "run" };
+    if m.resumed_runs > 0 {
         let _ = writeln!(
             md,
-            "{} CPU seconds in {} s of wall time on {} threads (parallel speed-up {}).\n",
+            "{} of the {runs} runs were done by an earlier invocation and resumed; their cost is \
+             counted above. This invocation took {} s of wall time, {} s of it running runs \
+             on {} threads.\n",
+            m.resumed_runs,
+            num(m.total_wall_seconds),
+            num(m.runs_wall_seconds),
+            m.threads
+        );
+    } else if m.runs_wall_seconds > 0.0 && secs > 0.0 {
+        let _ = writeln!(
+            md,
+            "The runs took {} {what} seconds in {} s of wall time on {} threads (parallel \
+             speed-up {}); the whole study, with tables, plots and analyses, took {} s.\n",
             num(secs),
-            num(wall),
-            inp.meta.threads,
-            num(secs / wall)
+            num(m.runs_wall_seconds),
+            m.threads,
+            num(secs / m.runs_wall_seconds),
+            num(m.total_wall_seconds)
         );
     }
 }
@@ -261,7 +296,8 @@ fn footer(md: &mut String, runs: &[(RunSpec, RunOutput)]) {
          The tables are tidy Parquet files beside this report (polars, pandas, DuckDB, R):\n\n\
          - `runs.parquet`: one row per simulation: `run_id`, `point_id`, `replica`, `seed`, \
          the swept parameters as columns, one column per scalar result (prefixed `result.` \
-         if its name is taken), the cost (`events`, `collisions`, `wall_seconds`) and `status`.\n",
+         if its name is taken), the cost (`events`, `collisions`, `wall_seconds`, \
+         `cpu_seconds`, and `prepare_seconds` of those spent compressing the start) and `status`.\n",
     );
     if runs.iter().any(|(_, o)| !o.series.is_empty()) {
         md.push_str("- `series.parquet`: long form `run_id`, `t`, `observable`, `value`.\n");
@@ -274,7 +310,10 @@ fn footer(md: &mut String, runs: &[(RunSpec, RunOutput)]) {
     }
     md.push_str(
         "- `summary.parquet`: per point and result: `point_id`, the parameters, `result`, `n`, \
-         `mean`, `std`, `stderr`, `ci_low`, `ci_high`, `theory`, `z`, `seconds`, `collisions`.\n\n\
+         `mean`, `std`, `stderr`, `ci_low`, `ci_high`, `theory`, `z`, `cpu_seconds`, \
+         `wall_seconds`, `collisions`.\n\n\
+         Column names contain dots (`scene.piston.mass`): quote them in SQL, e.g. in DuckDB \
+         `SELECT \"scene.piston.mass\", mean FROM 'summary.parquet'`.\n\n\
          Units are reduced: lengths in σ, masses in m, energies in kT, time in σ√(m/kT).\n",
     );
 }

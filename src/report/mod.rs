@@ -3,7 +3,6 @@
 //! The report is written from one markdown text (`markdown.rs`); `html.rs`
 //! renders that same text with the SVGs inlined, so the two never disagree.
 
-mod atomic;
 pub mod chart;
 pub mod format;
 pub mod html;
@@ -21,6 +20,7 @@ use crate::analysis::summary_types::SummaryRow;
 use crate::study::descriptor_types::Descriptor;
 use crate::study::output::RunOutput;
 use crate::study::plan_types::RunSpec;
+use crate::study::store::write_atomic;
 use anyhow::Context;
 use std::path::Path;
 
@@ -32,7 +32,14 @@ pub struct ReportMeta {
     pub started: String,
     pub finished: String,
     pub version: String,
+    /// Wall time of the whole study (runs, tables, analyses; not this report).
     pub total_wall_seconds: f64,
+    /// Wall time this invocation spent running runs.
+    pub runs_wall_seconds: f64,
+    /// Runs reused from an earlier invocation (their cost was paid then).
+    pub resumed_runs: usize,
+    /// Runs the plan has (failed ones included; 0: as many as were given).
+    pub planned_runs: usize,
     /// (run id, error message) of runs that did not finish.
     pub failed_runs: Vec<(u64, String)>,
 }
@@ -61,7 +68,7 @@ pub fn write(
         figures: &figures,
         points: &points,
     });
-    atomic::write(&out_dir.join("report.md"), md.as_bytes())?;
+    write_atomic(&out_dir.join("report.md"), md.as_bytes())?;
     let page = html::page(&descriptor.study.name, &md, out_dir);
-    atomic::write(&out_dir.join("index.html"), page.as_bytes())
+    write_atomic(&out_dir.join("index.html"), page.as_bytes())
 }

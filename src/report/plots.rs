@@ -4,10 +4,11 @@
 
 use super::chart::{self, ChartSpec, Paint};
 use super::labels::{short_name, slug};
-use super::{atomic, plot_hist, plot_scalars, plot_series};
+use super::{plot_hist, plot_scalars, plot_series};
 use crate::analysis::summary_types::SummaryRow;
 use crate::study::output::RunOutput;
 use crate::study::plan_types::RunSpec;
+use crate::study::store::write_atomic;
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -39,26 +40,48 @@ pub fn write_all(
 ) -> anyhow::Result<Vec<Figure>> {
     let points = points(runs);
     let mut charts: Vec<(String, ChartSpec, String)> = Vec::new();
+    let mut files = FileNames::default();
     for (name, spec) in plot_scalars::charts(summary, &points) {
         let caption =
             format!("{name}: mean ± standard error per sweep point, with theory where known");
-        charts.push((format!("scalar_{}.svg", slug(&name)), spec, caption));
+        charts.push((files.unique("scalar", &name), spec, caption));
     }
     for (name, spec) in plot_series::charts(runs, &points) {
         let caption =
             format!("{name} against time: mean over replicas with ±1 std band, and single runs");
-        charts.push((format!("series_{}.svg", slug(&name)), spec, caption));
+        charts.push((files.unique("series", &name), spec, caption));
     }
     for (name, spec) in plot_hist::charts(runs, &points) {
         let caption = format!("{name}: mean count per bin over replicas");
-        charts.push((format!("hist_{}.svg", slug(&name)), spec, caption));
+        charts.push((files.unique("hist", &name), spec, caption));
     }
     let mut figures = Vec::new();
     for (file, spec, caption) in charts {
-        atomic::write(&out_dir.join(&file), chart::render(&spec).as_bytes())?;
+        write_atomic(&out_dir.join(&file), chart::render(&spec).as_bytes())?;
         figures.push(Figure { file, caption });
     }
     Ok(figures)
+}
+
+/// SVG file names from result names. Slugs can collide ("a.b" and "a_b",
+/// "A" and "a"): a later name gets `_2`, `_3`, ...; names come in a fixed
+/// order, so each keeps its file from run to run.
+#[derive(Default)]
+pub struct FileNames {
+    used: std::collections::HashSet<String>,
+}
+
+impl FileNames {
+    pub fn unique(&mut self, prefix: &str, name: &str) -> String {
+        let stem = format!("{prefix}_{}", slug(name));
+        let mut file = format!("{stem}.svg");
+        let mut k = 1;
+        while !self.used.insert(file.clone()) {
+            k += 1;
+            file = format!("{stem}_{k}.svg");
+        }
+        file
+    }
 }
 
 /// Tableau-like colours: distinct, and readable on white.
@@ -136,6 +159,17 @@ mod tests {
         assert_eq!((e[0], e[5]), (0, 19));
         assert_eq!(evenly(&[1, 2], 6), vec![1, 2]);
         assert!(evenly::<u32>(&[], 6).is_empty());
+    }
+
+    #[test]
+    fn colliding_slugs_get_distinct_files() {
+        let mut files = FileNames::default();
+        assert_eq!(files.unique("scalar", "a.b"), "scalar_a_b.svg");
+        assert_eq!(files.unique("scalar", "a_b"), "scalar_a_b_2.svg");
+        assert_eq!(files.unique("scalar", "A.B"), "scalar_a_b_3.svg");
+        assert_eq!(files.unique("series", "a.b"), "series_a_b.svg");
+        // A name whose own slug looks like a numbered one still gets its own file.
+        assert_eq!(files.unique("scalar", "a_b_2"), "scalar_a_b_2_2.svg");
     }
 
     #[test]

@@ -44,7 +44,8 @@ pub fn build<const D: usize>(spec: &SceneSpec, rng: &mut ChaCha8Rng) -> Result<B
     let obstacle = match &spec.piston {
         Some(_) if D > 1 && sim_box.axes[0].is_periodic() => {
             return Err(
-                "a piston slides along x between walls, but axis 0 is periodic; make it \"walls\"".into(),
+                "a piston slides along x between walls, but axis 0 is periodic; make it \"walls\""
+                    .into(),
             );
         }
         Some(ps) => Some(piston::extent(ps, sim_box.size[0])?),
@@ -170,10 +171,11 @@ pub fn build<const D: usize>(spec: &SceneSpec, rng: &mut ChaCha8Rng) -> Result<B
         // The engine's chain needs left-to-right order.
         particles.sort_by(|a, b| a.pos[0].total_cmp(&b.pos[0]));
     }
-    let piston = spec
-        .piston
-        .as_ref()
-        .and_then(|_| particles.iter().position(|p| p.species as usize == names.len() - 1));
+    let piston = spec.piston.as_ref().and_then(|_| {
+        particles
+            .iter()
+            .position(|p| p.species as usize == names.len() - 1)
+    });
     Ok(Built {
         particles,
         sim_box,

@@ -36,6 +36,11 @@ pub fn resolve(spec: &SceneSpec) -> Result<SceneSpec, String> {
             }
         }
     };
-    merged.dimension = Some(merged.dimension()?);
+    // Filled in where box or boundary tell; a scene that says nothing, or
+    // contradicts itself, is left for `dimension()` to refuse where it is
+    // needed, so a caller can point at the key at fault.
+    if let Ok(d) = merged.dimension() {
+        merged.dimension = Some(d);
+    }
     Ok(merged)
 }

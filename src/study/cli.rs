@@ -1,13 +1,18 @@
 //! The `study` command line: parse arguments, dispatch, map outcomes to exit
 //! codes (0 ok, 1 some runs failed, 2 bad input, 130 interrupted).
 
+use super::analyses;
 use super::descriptor::{Loaded, show};
 use super::errors::StudyError;
+use super::estimate::{self, RunCost};
 use super::pipeline::{self, StudyOptions};
 use super::plan;
-use super::progress::ProgressMode;
+use super::plan_types::RunSpec;
+use super::progress::{ProgressMode, human_duration};
 use super::runner::SimulateFn;
 use clap::{Args, Parser, Subcommand};
+use std::collections::BTreeSet;
+use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -28,7 +33,7 @@ enum Command {
     Run(RunArgs),
     /// Check a descriptor and print its plan without running anything.
     Validate(PlanArgs),
-    /// List the bundled studies and scenes.
+    /// List the bundled studies, scenes, observables and analyses.
     List,
 }
 
@@ -146,12 +151,14 @@ fn validate(a: &PlanArgs) -> Result<i32, StudyError> {
     let loaded = pipeline::prepare(&a.file, a.replicas, a.quick)?;
     pipeline::confirm_size(&loaded, a.yes)?;
     let specs = plan::plan(&loaded)?;
-    print!("{}", describe_plan(&loaded, specs.len()));
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    emit(&describe_plan(&loaded, &specs, threads));
     Ok(0)
 }
 
-/// The plan in words: sweep, counts and a crude cost estimate.
-pub fn describe_plan(loaded: &Loaded, runs: usize) -> String {
+/// The plan in words: sweep, counts, and the estimated collisions and time
+/// on `threads` threads.
+pub fn describe_plan(loaded: &Loaded, specs: &[RunSpec], threads: usize) -> String {
     let d = &loaded.descriptor;
     let (points, _) = plan::count(loaded);
     let mut out = format!("{}: ok — {}\n", loaded.file, d.study.name);
@@ -163,64 +170,135 @@ pub fn describe_plan(loaded: &Loaded, runs: usize) -> String {
         }
     }
     out += &format!(
-        "  points: {points}, replicas: {}, runs: {runs}\n",
-        d.study.replicas
+        "  points: {points}, replicas: {}, runs: {}\n",
+        d.study.replicas,
+        specs.len()
     );
-    let particles: usize = d.scene.species.iter().map(|s| s.count).sum();
-    let estimate = match (d.run.collisions, d.run.duration) {
-        (Some(c), _) => format!("{:.3e} collisions ({} per run)", c as f64 * runs as f64, c),
-        (None, Some(t)) if particles > 0 => format!(
-            "~{:.1e} collisions (crude: about one collision per particle per unit time, {particles} particles x {t} time units per run)",
-            particles as f64 * (t + d.run.equilibrate) * runs as f64
-        ),
-        _ => "unknown (the particle count comes from a preset)".to_string(),
-    };
-    out += &format!("  estimated cost: {estimate}\n");
+    // One estimate per point: replicas differ only in their seeds.
+    let mut costs = Vec::new();
+    for (i, spec) in specs.iter().enumerate() {
+        if i == 0 || specs[i - 1].point_id != spec.point_id {
+            costs.push(estimate::run_cost(&spec.descriptor));
+        }
+    }
+    let replicas = f64::from(d.study.replicas);
+    let known: Vec<RunCost> = costs.iter().flatten().copied().collect();
+    if known.is_empty() || known.len() < costs.len() {
+        out += "  estimated cost: unknown (a scene could not be resolved)\n";
+        return out;
+    }
+    let collisions: f64 = known.iter().map(|c| c.collisions).sum::<f64>() * replicas;
+    let seconds: f64 = known.iter().map(RunCost::seconds).sum::<f64>() * replicas;
+    let busy = threads.min(specs.len()).max(1);
+    let dims: BTreeSet<usize> = known.iter().map(|c| c.dimension).collect();
+    let rates: Vec<String> = dims
+        .iter()
+        .map(|&dim| {
+            format!(
+                "{} collisions/s per thread in {dim}D",
+                approx(estimate::COLLISIONS_PER_SECOND[dim - 1])
+            )
+        })
+        .collect();
+    out += &format!(
+        "  estimated collisions: ~{} pair collisions ({} per run on average; kinetic theory of the initial state)\n",
+        approx(collisions),
+        approx(collisions / specs.len().max(1) as f64)
+    );
+    out += &format!(
+        "  estimated time: ~{} on {busy} {}, at a nominal {} (docs/performance.md); an estimate: sampling, analyses and dense or uneven scenes change it\n",
+        human_duration(seconds / busy as f64),
+        if busy == 1 { "thread" } else { "threads" },
+        rates.join(", ")
+    );
     out
 }
 
+/// 1234 -> "1234", 1.5e7 -> "1.5e7".
+fn approx(x: f64) -> String {
+    if x < 1e4 {
+        format!("{x:.0}")
+    } else {
+        format!("{x:.1e}")
+    }
+}
+
 fn list() -> Result<i32, StudyError> {
-    let dir = studies_dir();
-    println!("studies ({}):", dir.display());
-    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .map(|it| {
-            it.flatten()
-                .map(|e| e.path())
-                .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-                .collect()
-        })
-        .unwrap_or_default();
-    files.sort();
-    if files.is_empty() {
-        println!("  (none found)");
-    }
-    for f in files {
-        let stem = f
-            .file_stem()
-            .unwrap_or_default()
-            .to_string_lossy()
-            .into_owned();
-        println!("  {stem:<20} {}", description(&f));
-    }
-    let scenes = scene_presets();
-    println!("scenes:");
-    if scenes.is_empty() {
-        println!("  (no bundled scenes in this build; describe the scene in [scene])");
-    }
-    for (name, about) in scenes {
-        println!("  {name:<20} {about}");
-    }
+    emit(&listing());
     Ok(0)
 }
 
-/// `studies/` of the working directory, else the one shipped with the source.
-fn studies_dir() -> PathBuf {
-    let local = Path::new("studies");
-    if local.is_dir() {
-        local.to_path_buf()
-    } else {
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("studies")
+/// What `study list` prints.
+pub fn listing() -> String {
+    let mut out = String::new();
+    let candidates = studies_dirs();
+    match candidates.iter().find(|d| d.is_dir()) {
+        Some(dir) => {
+            let _ = writeln!(out, "studies ({}):", dir.display());
+            let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+                .map(|it| {
+                    it.flatten()
+                        .map(|e| e.path())
+                        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+                        .collect()
+                })
+                .unwrap_or_default();
+            files.sort();
+            if files.is_empty() {
+                let _ = writeln!(out, "  (none found)");
+            }
+            for f in files {
+                let stem = f
+                    .file_stem()
+                    .unwrap_or_default()
+                    .to_string_lossy()
+                    .into_owned();
+                let _ = writeln!(out, "  {stem:<24} {}", description(&f));
+            }
+        }
+        None => {
+            let looked: Vec<String> = candidates.iter().map(|d| d.display().to_string()).collect();
+            let _ = writeln!(out, "studies: none found (looked in {})", looked.join(", "));
+        }
     }
+    let _ = writeln!(out, "scenes ([scene] preset = \"<name>\"):");
+    for p in crate::scene::presets::list() {
+        let _ = writeln!(out, "  {:<24} {}", p.name, p.about);
+    }
+    let _ = writeln!(
+        out,
+        "observables ([observe] series / scalars / histograms = [\"<name>\"]):"
+    );
+    for (kind, name, about) in crate::observe::CATALOGUE {
+        let _ = writeln!(out, "  {kind:<10} {name:<26} {about}");
+    }
+    let _ = writeln!(out, "analyses ([analysis.<name>]):");
+    for a in analyses::ANALYSES {
+        let options: Vec<String> = a
+            .options
+            .iter()
+            .map(|o| format!("{} ({}, default {})", o.name, o.range_text(), o.default))
+            .collect();
+        let options = if options.is_empty() {
+            "no options".to_string()
+        } else {
+            format!("options: {}", options.join(", "))
+        };
+        let _ = writeln!(out, "  {:<24} {}; {options}", a.name, a.about);
+    }
+    out
+}
+
+/// Where bundled studies may be, in order: `studies/` of the working
+/// directory; beside the executable or up to three folders above it
+/// (`target/release/study` in a checkout); the source tree it was built from.
+fn studies_dirs() -> Vec<PathBuf> {
+    let mut dirs = vec![PathBuf::from("studies")];
+    if let Ok(exe) = std::env::current_exe() {
+        dirs.extend(exe.ancestors().skip(1).take(4).map(|a| a.join("studies")));
+    }
+    dirs.push(Path::new(env!("CARGO_MANIFEST_DIR")).join("studies"));
+    dirs
 }
 
 fn description(path: &Path) -> String {
@@ -239,11 +317,8 @@ fn description(path: &Path) -> String {
     }
 }
 
-/// SEAM (scenes): bundled scene presets as (name, one-line description);
-/// switch to `crate::scene::presets::list()` once presets exist.
-fn scene_presets() -> Vec<(String, String)> {
-    crate::scene::presets::list()
-        .iter()
-        .map(|p| (p.name.to_string(), p.about.to_string()))
-        .collect()
+/// Print to stdout; a closed pipe (`study list | head`) is not an error.
+fn emit(text: &str) {
+    use std::io::Write;
+    let _ = std::io::stdout().lock().write_all(text.as_bytes());
 }

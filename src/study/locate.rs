@@ -26,8 +26,15 @@ pub fn position_of(text: &str, path: &str) -> Option<(usize, usize)> {
 /// Like `position_of` with the keys given one by one, for keys that contain
 /// dots themselves (sweep parameters are named by quoted key paths).
 pub fn position_of_keys(text: &str, keys: &[&str]) -> Option<(usize, usize)> {
+    deepest(text, keys).map(|(_, position)| position)
+}
+
+/// How many of `keys` the text has, in order, and the line:col of the last
+/// one found; None if the text does not parse or has not even the first.
+pub fn deepest(text: &str, keys: &[&str]) -> Option<(usize, (usize, usize))> {
     let root = DeTable::parse(text).ok()?;
     let mut best: Option<usize> = None;
+    let mut depth = 0;
     let mut table: Option<&DeTable<'_>> = Some(root.get_ref());
     let mut array: Option<&[Spanned<DeValue<'_>>]> = None;
     for &segment in keys {
@@ -36,12 +43,14 @@ pub fn position_of_keys(text: &str, keys: &[&str]) -> Option<(usize, usize)> {
                 break;
             };
             best = Some(key.span().start);
+            depth += 1;
             value
         } else if let Some(items) = array.take() {
             let Some(item) = segment.parse::<usize>().ok().and_then(|i| items.get(i)) else {
                 break;
             };
             best = Some(item.span().start);
+            depth += 1;
             item
         } else {
             break;
@@ -52,7 +61,7 @@ pub fn position_of_keys(text: &str, keys: &[&str]) -> Option<(usize, usize)> {
             _ => {}
         }
     }
-    best.map(|offset| line_col(text, offset))
+    best.map(|offset| (depth, line_col(text, offset)))
 }
 
 /// Dotted key path of the deepest key or value whose span contains `offset`.

@@ -17,6 +17,9 @@ pub struct Manifest {
     /// The descriptor as run: TOML text and parsed.
     pub descriptor_toml: String,
     pub descriptor: serde_json::Value,
+    /// The files this study published beside the manifest (and the manifest):
+    /// the next study in the same directory replaces exactly these.
+    pub outputs: Vec<String>,
 }
 
 #[derive(Debug, Clone, Copy, Serialize)]
@@ -25,7 +28,7 @@ pub struct RunCounts {
     /// Run in this invocation (including failed ones).
     pub done: usize,
     pub failed: usize,
-    /// Reused from an earlier, interrupted invocation.
+    /// Reused from an earlier invocation.
     pub resumed: usize,
 }
 

@@ -12,12 +12,18 @@ pub struct RunOutput {
     pub series: Vec<Series>,
     /// Histograms, long form in `histograms.parquet`.
     pub histograms: Vec<Histogram>,
-    /// Engine events processed (collisions, wall hits, cell crossings, samples).
+    /// Engine events processed (collisions, wall hits, list renewals, samples).
     pub events: u64,
     /// Pair collisions (the figure of merit for cost).
     pub collisions: u64,
     /// Wall-clock seconds of this run (excluded from bit-identity checks).
     pub wall_seconds: f64,
+    /// CPU seconds of the thread that ran it (NaN where the platform does
+    /// not tell; excluded from bit-identity checks).
+    pub cpu_seconds: f64,
+    /// Wall-clock seconds of those spent preparing the start (compression;
+    /// 0 for direct placements; excluded from bit-identity checks).
+    pub prepare_seconds: f64,
 }
 
 /// One observable sampled over time.

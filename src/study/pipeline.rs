@@ -3,11 +3,13 @@
 
 use super::descriptor::{self, Loaded};
 use super::errors::{DescriptorError, StudyError};
+use super::lock::OutLock;
 use super::manifest::{Manifest, RunCounts, rfc3339, version};
 use super::output::RunOutput;
 use super::plan::{self, CONFIRM_ABOVE};
 use super::plan_types::RunSpec;
 use super::progress::ProgressMode;
+use super::publish::{self, Staging};
 use super::record::RunRecord;
 use super::runner::{RunnerOptions, SimulateFn, run_all};
 use super::store;
@@ -16,12 +18,12 @@ use crate::report::ReportMeta;
 use anyhow::Context;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
-use std::time::SystemTime;
+use std::time::{Instant, SystemTime};
 
 /// Options of `study run` (and what `study validate` shares).
 #[derive(Debug, Clone)]
 pub struct StudyOptions {
-    /// Output directory; default `reports/<study name>/`.
+    /// Output directory; default `default_out_dir`.
     pub out: Option<PathBuf>,
     pub threads: Option<usize>,
     pub replicas: Option<u32>,
@@ -69,13 +71,21 @@ pub fn confirm_size(loaded: &Loaded, yes: bool) -> Result<(), DescriptorError> {
     Ok(())
 }
 
-pub fn default_out_dir(loaded: &Loaded) -> PathBuf {
-    Path::new("reports").join(&loaded.descriptor.study.name)
+/// `reports/<study name>/`, or `reports/<study name>-quick/` for `--quick`,
+/// so a quick look never overwrites the full study's runs.
+pub fn default_out_dir(loaded: &Loaded, quick: bool) -> PathBuf {
+    let name = &loaded.descriptor.study.name;
+    let folder = if quick {
+        format!("{name}-quick")
+    } else {
+        name.clone()
+    };
+    Path::new("reports").join(folder)
 }
 
 /// Run the study at `path`. Completed runs are kept under `OUT/runs/` so an
-/// interrupted study resumes; tables, report and manifest are written only
-/// when every run has finished.
+/// interrupted study resumes; tables, plots, report and manifest are written
+/// only when every run has finished, and published together (`publish.rs`).
 pub fn run_study(
     path: &Path,
     options: &StudyOptions,
@@ -83,22 +93,27 @@ pub fn run_study(
     stop: &AtomicBool,
 ) -> Result<StudyOutcome, StudyError> {
     let started = SystemTime::now();
+    let clock = Instant::now();
     let loaded = prepare(path, options.replicas, options.quick)?;
     confirm_size(&loaded, options.yes)?;
     let specs = plan::plan(&loaded)?;
     let out_dir = options
         .out
         .clone()
-        .unwrap_or_else(|| default_out_dir(&loaded));
+        .unwrap_or_else(|| default_out_dir(&loaded, options.quick));
     std::fs::create_dir_all(&out_dir)
         .with_context(|| format!("cannot create the output directory {}", out_dir.display()))?;
+    let _lock = OutLock::acquire(&out_dir)?;
+    publish::remove_leftovers(&out_dir)?;
 
     let runner_options = RunnerOptions {
         threads: options.threads,
         fresh: options.fresh,
         progress: options.progress,
     };
+    let runs_clock = Instant::now();
     let report = run_all(&specs, &out_dir, simulate, &runner_options, stop)?;
+    let runs_wall_seconds = runs_clock.elapsed().as_secs_f64();
     if report.interrupted {
         return Err(StudyError::Interrupted(
             report.records.iter().flatten().count(),
@@ -114,23 +129,34 @@ pub fn run_study(
         .map(|(s, r)| (s.clone(), r.output.clone()))
         .collect();
 
+    let staging = Staging::create(&out_dir)?;
     let summary = summarize(&succeeded);
-    store::write_tables(&out_dir, &runs, &summary)?;
-    let sections = crate::analysis::sections(&loaded.descriptor, &succeeded, &out_dir)?;
+    store::write_tables(staging.dir(), &runs, &summary)?;
+    let sections = crate::analysis::sections(&loaded.descriptor, &succeeded, staging.dir())?;
     let info = ReportMeta {
         command: options.command_line.join(" "),
         threads: report.threads,
         started: rfc3339(started),
         finished: rfc3339(SystemTime::now()),
         version: version().to_string(),
-        total_wall_seconds: runs.iter().map(|(_, r)| r.output.wall_seconds).sum(),
+        total_wall_seconds: clock.elapsed().as_secs_f64(),
+        runs_wall_seconds,
+        resumed_runs: report.resumed,
+        planned_runs: runs.len(),
         failed_runs: runs
             .iter()
             .filter(|(_, r)| !r.ok())
             .map(|(s, r)| (s.run_id, r.status.clone()))
             .collect(),
     };
-    write_report(&out_dir, &loaded, &succeeded, &summary, &sections, &info)?;
+    write_report(
+        staging.dir(),
+        &loaded,
+        &succeeded,
+        &summary,
+        &sections,
+        &info,
+    )?;
 
     let counts = RunCounts {
         planned: runs.len(),
@@ -138,6 +164,9 @@ pub fn run_study(
         failed: report.failed,
         resumed: report.resumed,
     };
+    let mut outputs = staging.files()?;
+    outputs.push(publish::MANIFEST.to_string());
+    outputs.sort();
     let manifest = Manifest {
         bonkers_version: info.version,
         command_line: options.command_line.clone(),
@@ -152,9 +181,11 @@ pub fn run_study(
             .collect(),
         descriptor_toml: loaded.text_as_run(),
         descriptor: serde_json::to_value(&loaded.descriptor).unwrap_or_default(),
+        outputs,
     };
     let json = manifest.to_json().context("cannot encode manifest.json")?;
-    store::write_atomic(&out_dir.join("manifest.json"), json.as_bytes())?;
+    store::write_atomic(&staging.dir().join(publish::MANIFEST), json.as_bytes())?;
+    staging.publish()?;
     Ok(StudyOutcome {
         out_dir,
         planned: counts.planned,

@@ -1,11 +1,14 @@
-//! Sweep x replicas -> one `RunSpec` per simulation, each with its own seed and
-//! the descriptor as it applies to its sweep point.
+//! Sweep x replicas -> one `RunSpec` per simulation, each with the descriptor
+//! as it applies to its sweep point and its own seed, derived from (study
+//! seed, the point's swept values, replica).
 
 use super::descriptor::{Loaded, apply_overrides, from_table, show};
 use super::descriptor_types::{Scale, SweepMode, SweepSection, SweepValues};
 use super::errors::DescriptorError;
 use super::plan_types::RunSpec;
-use super::seeds::run_seed;
+use super::seeds::{point_key, run_seed};
+use super::validate;
+use std::collections::HashMap;
 
 /// More runs than this need `--yes`.
 pub const CONFIRM_ABOVE: u64 = 100_000;
@@ -110,13 +113,22 @@ pub fn count(loaded: &Loaded) -> (u64, u64) {
 }
 
 /// Expand the descriptor into runs: run_id = point_id * replicas + replica.
+/// Every point is checked as it will run, so a study fails here, before
+/// anything runs, rather than run by run.
 pub fn plan(loaded: &Loaded) -> Result<Vec<RunSpec>, DescriptorError> {
     let (_, runs) = count(loaded);
     if runs > HARD_LIMIT {
+        let at = if loaded.descriptor.sweep.is_some() {
+            "sweep"
+        } else {
+            "study.replicas"
+        };
         return Err(DescriptorError::new(
             &loaded.file,
             format!("the plan has {runs} runs, more than the {HARD_LIMIT} one study can hold"),
         )
+        .at(super::locate::position_of(&loaded.text, at))
+        .key(at)
         .hint(
             "sweep fewer values or fewer replicas, or split the study into several descriptors",
         ));
@@ -124,37 +136,43 @@ pub fn plan(loaded: &Loaded) -> Result<Vec<RunSpec>, DescriptorError> {
     let d = &loaded.descriptor;
     let replicas = d.study.replicas;
     let mut specs = Vec::new();
+    let mut seen: HashMap<u64, u64> = HashMap::new();
     for (point_id, params) in points(d.sweep.as_ref()).into_iter().enumerate() {
         let point_id = point_id as u64;
-        let mut table = loaded.table.clone();
-        for (key, value) in &params {
-            apply_overrides(&mut table, key, value.clone())
-                .map_err(|m| sweep_error(loaded, key, value, &m))?;
-        }
-        let descriptor = from_table(&loaded.file, &table).map_err(|e| {
-            let shown: Vec<String> = params
-                .iter()
-                .map(|(k, v)| format!("`{k}` = {}", show(v)))
-                .collect();
-            let mut err = DescriptorError::new(
+        let fail = |message: String, hint: Option<String>| {
+            let err = DescriptorError::new(
                 &loaded.file,
-                format!(
-                    "sweep point {point_id} ({}): {}",
-                    shown.join(", "),
-                    e.message
-                ),
+                format!("sweep point {point_id} ({}): {message}", shown(&params)),
             )
             .at(super::locate::position_of(&loaded.text, "sweep.parameters"))
             .key("sweep.parameters");
+            hint.into_iter().fold(err, DescriptorError::hint)
+        };
+        let mut table = loaded.table.clone();
+        for (key, value) in &params {
+            apply_overrides(&mut table, key, value.clone())
+                .map_err(|m| fail(format!("`{key}`: {m}"), None))?;
+        }
+        let descriptor = from_table(&loaded.file, &table).map_err(|e| {
+            let mut err = fail(e.message, None);
             err.hints = e.hints;
             err
         })?;
+        validate::point(&descriptor)
+            .map_err(|p| fail(format!("`{}`: {}", p.key, p.message), p.hint))?;
+        let key = point_key(&params);
+        if let Some(other) = seen.insert(key, point_id) {
+            return Err(fail(
+                format!("has the same values as point {other}"),
+                Some("remove the repeat: both points would run with the same seeds".into()),
+            ));
+        }
         for replica in 0..replicas {
             specs.push(RunSpec {
                 run_id: point_id * u64::from(replicas) + u64::from(replica),
                 point_id,
                 replica,
-                seed: run_seed(d.study.seed, point_id, replica),
+                seed: run_seed(d.study.seed, key, replica),
                 params: params.clone(),
                 descriptor: descriptor.clone(),
             });
@@ -163,15 +181,11 @@ pub fn plan(loaded: &Loaded) -> Result<Vec<RunSpec>, DescriptorError> {
     Ok(specs)
 }
 
-fn sweep_error(loaded: &Loaded, key: &str, value: &toml::Value, message: &str) -> DescriptorError {
-    let at = format!("sweep.parameters.{key}");
-    DescriptorError::new(
-        &loaded.file,
-        format!("sweep parameter `{key}` = {}: {message}", show(value)),
-    )
-    .at(super::locate::position_of_keys(
-        &loaded.text,
-        &["sweep", "parameters", key],
-    ))
-    .key(at)
+/// "`scene.piston.mass` = 10.0, `run.duration` = 5.0".
+fn shown(params: &[(String, toml::Value)]) -> String {
+    params
+        .iter()
+        .map(|(k, v)| format!("`{k}` = {}", show(v)))
+        .collect::<Vec<_>>()
+        .join(", ")
 }

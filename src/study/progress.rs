@@ -85,11 +85,8 @@ impl Progress {
                 s.last_tenth = tenth;
                 s.last_line = Instant::now();
                 eprintln!(
-                    "study: {}/{} runs, {} collisions/s{}",
-                    s.done,
-                    self.total,
-                    si(rate),
-                    failed_note(s.failed)
+                    "{}",
+                    plain_line(s.done, self.total, s.failed, rate, s.start.elapsed())
                 );
             }
         }
@@ -99,6 +96,36 @@ impl Progress {
         if let Some(bar) = &self.bar {
             bar.finish();
         }
+    }
+}
+
+/// A progress line for logs: runs done, collision rate, failures and the
+/// time left if the remaining runs go as fast as the finished ones.
+pub fn plain_line(done: u64, total: u64, failed: u64, rate: f64, elapsed: Duration) -> String {
+    let eta = if done == 0 {
+        "unknown".to_string()
+    } else if done >= total {
+        "done".to_string()
+    } else {
+        let left = elapsed.as_secs_f64() * (total - done) as f64 / done as f64;
+        human_duration(left)
+    };
+    format!(
+        "study: {done}/{total} runs, {} collisions/s{}, ETA {eta}",
+        si(rate),
+        failed_note(failed)
+    )
+}
+
+/// Seconds in the unit a person would use: "40 s", "12 min", "3.5 h".
+pub fn human_duration(seconds: f64) -> String {
+    match seconds {
+        s if !s.is_finite() || s < 0.0 => "unknown".into(),
+        s if s < 1.0 => "under a second".into(),
+        s if s < 90.0 => format!("{s:.0} s"),
+        s if s < 5400.0 => format!("{:.0} min", s / 60.0),
+        s if s < 172_800.0 => format!("{:.1} h", s / 3600.0),
+        s => format!("{:.1} days", s / 86_400.0),
     }
 }
 

@@ -10,8 +10,8 @@ use serde::{Deserialize, Deserializer, Serialize, Serializer};
 #[derive(Debug, Clone, PartialEq)]
 pub struct RunRecord {
     pub run_id: u64,
-    /// Hash of the descriptor as run and the seed: a saved run is reused only
-    /// if it was made by exactly the same plan entry.
+    /// Hash of what the run did (see `runner::fingerprint`): a saved run is
+    /// reused only if this plan would run exactly the same.
     pub fingerprint: String,
     /// "ok" or "failed: <message>".
     pub status: String,
@@ -34,6 +34,13 @@ impl RunRecord {
 
 #[derive(Clone, Copy)]
 struct F(f64);
+
+/// A number a record did not save is unknown.
+impl Default for F {
+    fn default() -> F {
+        F(f64::NAN)
+    }
+}
 
 impl Serialize for F {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
@@ -82,6 +89,10 @@ struct Saved {
     events: u64,
     collisions: u64,
     wall_seconds: F,
+    #[serde(default)]
+    cpu_seconds: F,
+    #[serde(default)]
+    prepare_seconds: F,
 }
 
 impl From<&RunRecord> for Saved {
@@ -112,6 +123,8 @@ impl From<&RunRecord> for Saved {
             events: o.events,
             collisions: o.collisions,
             wall_seconds: F(o.wall_seconds),
+            cpu_seconds: F(o.cpu_seconds),
+            prepare_seconds: F(o.prepare_seconds),
         }
     }
 }
@@ -146,6 +159,8 @@ impl From<Saved> for RunRecord {
                 events: s.events,
                 collisions: s.collisions,
                 wall_seconds: s.wall_seconds.0,
+                cpu_seconds: s.cpu_seconds.0,
+                prepare_seconds: s.prepare_seconds.0,
             },
         }
     }

@@ -1,8 +1,9 @@
 //! Run the plan in parallel. Each finished run is saved as its own file
-//! (`OUT/runs/run-<id>.json`, written atomically) so an interrupted study
+//! (`OUT/runs/run-<seed>.json`, written atomically) so an interrupted study
 //! resumes where it stopped; a failing or panicking run is recorded and the
 //! others go on.
 
+use super::cpu_time::thread_cpu_seconds;
 use super::output::RunOutput;
 use super::plan_types::RunSpec;
 use super::progress::{Progress, ProgressMode};
@@ -10,6 +11,7 @@ pub use super::record::RunRecord;
 use super::seeds::fnv1a;
 use anyhow::Context;
 use rayon::prelude::*;
+use std::collections::HashSet;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -40,12 +42,24 @@ pub struct RunnerReport {
     pub threads: usize,
 }
 
-/// The fingerprint of a planned run.
+/// The fingerprint of a planned run: a hash of everything that decides what
+/// it computes: the bonkers version, its seed and replica, and its
+/// descriptor with the sweep values applied, less what cannot change a run
+/// (`[study]`: name, description and replica count; `[sweep]` and `[quick]`,
+/// already applied). So raising `--replicas` or inserting a sweep value
+/// reuses the runs already done.
 pub fn fingerprint(spec: &RunSpec) -> String {
-    let descriptor = serde_json::to_string(&spec.descriptor).unwrap_or_default();
+    let mut run = serde_json::to_value(&spec.descriptor).unwrap_or_default();
+    if let Some(sections) = run.as_object_mut() {
+        for section in ["study", "sweep", "quick"] {
+            sections.remove(section);
+        }
+    }
     let key = format!(
-        "{}|{}|{}|{}|{descriptor}",
-        spec.run_id, spec.point_id, spec.replica, spec.seed
+        "{}|{}|{}|{run}",
+        super::manifest::version(),
+        spec.seed,
+        spec.replica
     );
     format!("{:016x}", fnv1a(key.as_bytes()))
 }
@@ -54,12 +68,15 @@ pub fn runs_dir(out_dir: &Path) -> PathBuf {
     out_dir.join("runs")
 }
 
-fn run_file(out_dir: &Path, run_id: u64) -> PathBuf {
-    runs_dir(out_dir).join(format!("run-{run_id}.json"))
+/// A run's file is named by its seed (the `seed` column of runs.parquet),
+/// which stays with the run when the sweep or the replica count changes.
+pub fn run_file(out_dir: &Path, seed: u64) -> PathBuf {
+    runs_dir(out_dir).join(format!("run-{seed}.json"))
 }
 
 /// Run every planned run not already saved. `stop` is checked before each
 /// run starts (Ctrl-C sets it): in-flight runs finish and are saved.
+/// The caller holds the out dir's lock.
 pub fn run_all(
     specs: &[RunSpec],
     out_dir: &Path,
@@ -73,10 +90,16 @@ pub fn run_all(
             .with_context(|| format!("cannot remove {}", dir.display()))?;
     }
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    let tidied = tidy(specs, out_dir)?;
 
     let saved: Vec<Option<RunRecord>> = specs.iter().map(|s| load_saved(out_dir, s)).collect();
     let resumed = saved.iter().filter(|r| r.is_some()).count();
     let todo: Vec<usize> = (0..specs.len()).filter(|&i| saved[i].is_none()).collect();
+    if options.progress != ProgressMode::Quiet
+        && let Some(note) = tidied.note(resumed)
+    {
+        eprintln!("study: {note}");
+    }
 
     let threads = options
         .threads
@@ -95,7 +118,7 @@ pub fn run_all(
                     return Ok(None);
                 }
                 let record = execute(&specs[i], simulate);
-                save(out_dir, &record)?;
+                save(out_dir, &specs[i], &record)?;
                 progress.finished(record.ok(), record.output.collisions);
                 Ok(Some(record))
             })
@@ -123,9 +146,74 @@ pub fn run_all(
     })
 }
 
+/// What `tidy` found among the saved runs.
+#[derive(Debug, Default)]
+struct Tidied {
+    /// Saved successful runs of planned seeds that another descriptor or
+    /// bonkers version made: they are run again.
+    mismatched: usize,
+    /// Run files of no planned run, removed.
+    removed: usize,
+}
+
+impl Tidied {
+    fn note(&self, resumed: usize) -> Option<String> {
+        let mut parts = Vec::new();
+        if resumed > 0 {
+            parts.push(format!("resuming {resumed} saved runs"));
+        }
+        if self.mismatched > 0 {
+            parts.push(format!(
+                "{} saved runs were made by another descriptor or bonkers version and run again",
+                self.mismatched
+            ));
+        }
+        if self.removed > 0 {
+            parts.push(format!(
+                "removed {} saved runs that are not in this plan",
+                self.removed
+            ));
+        }
+        (!parts.is_empty()).then(|| parts.join("; "))
+    }
+}
+
+/// Remove temporary files an interrupted writer left and run files of no
+/// planned run (so the saved runs are those of this study), and count saved
+/// runs that no longer match their plan entry.
+fn tidy(specs: &[RunSpec], out_dir: &Path) -> anyhow::Result<Tidied> {
+    let planned: HashSet<PathBuf> = specs.iter().map(|s| run_file(out_dir, s.seed)).collect();
+    let mut tidied = Tidied::default();
+    let dir = runs_dir(out_dir);
+    let entries =
+        std::fs::read_dir(&dir).with_context(|| format!("cannot list {}", dir.display()))?;
+    for entry in entries.flatten() {
+        let path = entry.path();
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let temporary = super::store::is_temporary(&name);
+        if temporary || (name.starts_with("run-") && !planned.contains(&path)) {
+            std::fs::remove_file(&path)
+                .with_context(|| format!("cannot remove {}", path.display()))?;
+            tidied.removed += usize::from(!temporary);
+        }
+    }
+    for spec in specs {
+        let text = std::fs::read_to_string(run_file(out_dir, spec.seed));
+        if let Ok(record) = text.as_deref().map(RunRecord::from_json)
+            && let Ok(record) = record
+            && record.ok()
+            && record.fingerprint != fingerprint(spec)
+        {
+            tidied.mismatched += 1;
+        }
+    }
+    Ok(tidied)
+}
+
 /// Run one simulation, turning errors and panics into a failed record.
 fn execute(spec: &RunSpec, simulate: &SimulateFn<'_>) -> RunRecord {
     let start = Instant::now();
+    let cpu = thread_cpu_seconds();
     let result = catch_unwind(AssertUnwindSafe(|| simulate(spec)));
     let (status, mut output) = match result {
         Ok(Ok(output)) => ("ok".to_string(), output),
@@ -138,6 +226,7 @@ fn execute(spec: &RunSpec, simulate: &SimulateFn<'_>) -> RunRecord {
     if output.wall_seconds == 0.0 {
         output.wall_seconds = start.elapsed().as_secs_f64();
     }
+    output.cpu_seconds = thread_cpu_seconds() - cpu;
     RunRecord {
         run_id: spec.run_id,
         fingerprint: fingerprint(spec),
@@ -156,16 +245,17 @@ fn panic_message(panic: &(dyn std::any::Any + Send)) -> String {
     }
 }
 
-/// A saved successful run of exactly this plan entry, if any. Failed runs
-/// are not reused: a rerun retries them.
+/// A saved successful run of exactly this plan entry, if any (its run id
+/// is this plan's: ids shift when the sweep or replica count changes).
+/// Failed runs are not reused: a rerun retries them.
 fn load_saved(out_dir: &Path, spec: &RunSpec) -> Option<RunRecord> {
-    let text = std::fs::read_to_string(run_file(out_dir, spec.run_id)).ok()?;
-    let record = RunRecord::from_json(&text).ok()?;
-    (record.ok() && record.run_id == spec.run_id && record.fingerprint == fingerprint(spec))
-        .then_some(record)
+    let text = std::fs::read_to_string(run_file(out_dir, spec.seed)).ok()?;
+    let mut record = RunRecord::from_json(&text).ok()?;
+    record.run_id = spec.run_id;
+    (record.ok() && record.fingerprint == fingerprint(spec)).then_some(record)
 }
 
-fn save(out_dir: &Path, record: &RunRecord) -> anyhow::Result<()> {
+fn save(out_dir: &Path, spec: &RunSpec, record: &RunRecord) -> anyhow::Result<()> {
     let text = record.to_json().context("cannot encode a run record")?;
-    super::store::write_atomic(&run_file(out_dir, record.run_id), text.as_bytes())
+    super::store::write_atomic(&run_file(out_dir, spec.seed), text.as_bytes())
 }

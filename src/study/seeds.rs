@@ -1,5 +1,7 @@
-//! Per-run seeds: a pure function of (study seed, point, replica), so a run's
-//! random stream depends neither on thread count nor on execution order.
+//! Per-run seeds: a pure function of (study seed, the point's swept values,
+//! replica), so a run's random stream depends neither on thread count nor on
+//! execution order, nor on where its point sits in the sweep: inserting or
+//! removing a sweep value leaves every other point's seeds unchanged.
 
 /// SplitMix64's finalizer: a bijective mixer with good avalanche.
 fn mix(mut z: u64) -> u64 {
@@ -10,13 +12,57 @@ fn mix(mut z: u64) -> u64 {
 
 const GOLDEN: u64 = 0x9e37_79b9_7f4a_7c15;
 
-/// The seed of run (point_id, replica) of a study seeded with `study_seed`.
-/// Each input is folded in through a full mix, so neighbouring points and
-/// replicas get unrelated seeds.
-pub fn run_seed(study_seed: u64, point_id: u64, replica: u32) -> u64 {
+/// The seed of replica `replica` of the sweep point whose `point_key` is
+/// given, in a study seeded with `study_seed`. Each input is folded in
+/// through a full mix, so neighbouring points and replicas get unrelated seeds.
+pub fn run_seed(study_seed: u64, point_key: u64, replica: u32) -> u64 {
     let s = mix(study_seed.wrapping_add(GOLDEN));
-    let s = mix(s ^ point_id.wrapping_add(GOLDEN).wrapping_mul(GOLDEN));
+    let s = mix(s ^ point_key.wrapping_add(GOLDEN).wrapping_mul(GOLDEN));
     mix(s ^ u64::from(replica).wrapping_add(GOLDEN.rotate_left(17)))
+}
+
+/// A sweep point's identity: a hash of its (key path, value) pairs in a
+/// canonical text form (floats in Rust's shortest round-trip form, tables
+/// with sorted keys), independent of the point's index in the sweep.
+pub fn point_key(params: &[(String, toml::Value)]) -> u64 {
+    let mut text = String::new();
+    for (key, value) in params {
+        text.push_str(key);
+        text.push('=');
+        canonical(value, &mut text);
+        text.push('\n');
+    }
+    fnv1a(text.as_bytes())
+}
+
+fn canonical(value: &toml::Value, out: &mut String) {
+    use std::fmt::Write;
+    let _ = match value {
+        toml::Value::Float(f) => write!(out, "{f:?}"),
+        toml::Value::Integer(i) => write!(out, "{i}"),
+        toml::Value::String(s) => write!(out, "{s:?}"),
+        toml::Value::Boolean(b) => write!(out, "{b}"),
+        toml::Value::Datetime(d) => write!(out, "{d}"),
+        toml::Value::Array(items) => {
+            out.push('[');
+            for item in items {
+                canonical(item, out);
+                out.push(',');
+            }
+            write!(out, "]")
+        }
+        toml::Value::Table(t) => {
+            out.push('{');
+            let mut keys: Vec<&String> = t.keys().collect();
+            keys.sort();
+            for k in keys {
+                let _ = write!(out, "{k:?}=");
+                canonical(&t[k], out);
+                out.push(',');
+            }
+            write!(out, "}}")
+        }
+    };
 }
 
 /// FNV-1a over bytes: a stable (Rust-version independent) fingerprint hash.

@@ -6,33 +6,85 @@ use super::record::RunRecord;
 use crate::analysis::summary_types::SummaryRow;
 use anyhow::Context;
 use polars::prelude::{Column, DataFrame, ParquetReader, ParquetWriter, SerReader};
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashSet};
+use std::fs::File;
+use std::io::Write;
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
 
-/// Write `bytes` to `path` via a temporary sibling and a rename.
+/// Write `bytes` to `path` via a temporary sibling and a rename: a reader
+/// sees the old file or the new one, never half. Atomic, not synced: a
+/// study's outputs are synced once, together, when they are published
+/// (`publish.rs`); a run file that a power cut tore does not parse, so it is
+/// simply run again, and a sync per run would cost more than many runs.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> anyhow::Result<()> {
-    let tmp = temp_name(path);
-    std::fs::write(&tmp, bytes).with_context(|| format!("cannot write {}", tmp.display()))?;
-    std::fs::rename(&tmp, path)
-        .with_context(|| format!("cannot move {} into place", path.display()))
-}
-
-fn temp_name(path: &Path) -> PathBuf {
-    let mut name = path.file_name().unwrap_or_default().to_os_string();
-    name.push(".tmp");
-    path.with_file_name(name)
+    write_via_temp(path, |file| {
+        file.write_all(bytes)?;
+        Ok(())
+    })
 }
 
 /// Write `df` as Parquet at `path`, atomically.
 pub fn write_parquet(path: &Path, df: &mut DataFrame) -> anyhow::Result<()> {
+    write_via_temp(path, |file| {
+        ParquetWriter::new(&mut *file).finish(df)?;
+        Ok(())
+    })
+}
+
+/// `write` fills a fresh temporary file, which is renamed to `path`.
+fn write_via_temp(
+    path: &Path,
+    write: impl FnOnce(&mut File) -> anyhow::Result<()>,
+) -> anyhow::Result<()> {
     let tmp = temp_name(path);
-    let file =
-        std::fs::File::create(&tmp).with_context(|| format!("cannot create {}", tmp.display()))?;
-    ParquetWriter::new(file)
-        .finish(df)
-        .with_context(|| format!("cannot write {}", tmp.display()))?;
-    std::fs::rename(&tmp, path)
-        .with_context(|| format!("cannot move {} into place", path.display()))
+    let result = File::create(&tmp)
+        .map_err(anyhow::Error::from)
+        .and_then(|mut file| write(&mut file))
+        .with_context(|| format!("cannot write {}", tmp.display()))
+        .and_then(|()| {
+            std::fs::rename(&tmp, path)
+                .with_context(|| format!("cannot move {} into place", path.display()))
+        });
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
+}
+
+/// Make renames and removals in `dir` durable (Unix; elsewhere a rename is
+/// as durable as the file system makes it).
+pub fn sync_dir(dir: &Path) -> anyhow::Result<()> {
+    #[cfg(unix)]
+    {
+        let dir = if dir.as_os_str().is_empty() {
+            Path::new(".")
+        } else {
+            dir
+        };
+        File::open(dir)
+            .and_then(|d| d.sync_all())
+            .with_context(|| format!("cannot sync {}", dir.display()))?;
+    }
+    #[cfg(not(unix))]
+    let _ = dir;
+    Ok(())
+}
+
+/// `.<name>.<pid>-<n>.tmp` beside `path`: unique per process and write, so
+/// two writers never share a temporary file.
+fn temp_name(path: &Path) -> PathBuf {
+    static NEXT: AtomicU64 = AtomicU64::new(0);
+    let n = NEXT.fetch_add(1, Ordering::Relaxed);
+    let name = path.file_name().unwrap_or_default().to_string_lossy();
+    path.with_file_name(format!(".{name}.{}-{n}{TEMP_SUFFIX}", std::process::id()))
+}
+
+const TEMP_SUFFIX: &str = ".tmp";
+
+/// A temporary file of `write_atomic` (this version's or an earlier one's).
+pub fn is_temporary(file_name: &str) -> bool {
+    file_name.ends_with(TEMP_SUFFIX)
 }
 
 /// Read a Parquet table back (tests, `.ci/run`, later analyses).
@@ -44,9 +96,9 @@ pub fn read_parquet(path: &Path) -> anyhow::Result<DataFrame> {
         .with_context(|| format!("cannot read {}", path.display()))
 }
 
-/// Columns of `runs.parquet` that are always there; scalar results with one
-/// of these names are stored as `result.<name>`.
-const FIXED: [&str; 8] = [
+/// Columns of `runs.parquet` that are always there; a scalar result whose
+/// name is taken (by these or a swept key path) is stored as `result.<name>`.
+const FIXED: [&str; 10] = [
     "run_id",
     "point_id",
     "replica",
@@ -54,6 +106,8 @@ const FIXED: [&str; 8] = [
     "events",
     "collisions",
     "wall_seconds",
+    "cpu_seconds",
+    "prepare_seconds",
     "status",
 ];
 
@@ -78,8 +132,7 @@ pub fn write_tables(
     if runs.iter().any(|(_, r)| !r.output.histograms.is_empty()) {
         put("histograms.parquet", histograms_table(runs)?)?;
     }
-    let specs: Vec<&RunSpec> = runs.iter().map(|(s, _)| s).collect();
-    put("summary.parquet", summary_table(&specs, summary)?)?;
+    put("summary.parquet", summary_table(runs, summary)?)?;
     Ok(written)
 }
 
@@ -153,17 +206,13 @@ fn runs_table(runs: &[(RunSpec, RunRecord)]) -> anyhow::Result<DataFrame> {
             }
         }
     }
+    let mut taken: HashSet<String> = FIXED.iter().map(|s| s.to_string()).collect();
+    if let Some(first) = specs.first() {
+        taken.extend(first.params.iter().map(|(k, _)| k.clone()));
+    }
     for name in names {
         let col: Vec<Option<f64>> = runs.iter().map(|(_, r)| r.output.scalar(name)).collect();
-        let taken = FIXED.contains(&name)
-            || specs
-                .first()
-                .is_some_and(|s| s.params.iter().any(|(k, _)| k == name));
-        let column_name = if taken {
-            format!("result.{name}")
-        } else {
-            name.to_string()
-        };
+        let column_name = free_name(name, &mut taken);
         columns.push(Column::new(column_name.as_str().into(), col));
     }
     columns.push(Column::new(
@@ -185,12 +234,40 @@ fn runs_table(runs: &[(RunSpec, RunRecord)]) -> anyhow::Result<DataFrame> {
             .collect::<Vec<f64>>(),
     ));
     columns.push(Column::new(
+        "cpu_seconds".into(),
+        runs.iter()
+            .map(|(_, r)| r.output.cpu_seconds)
+            .collect::<Vec<f64>>(),
+    ));
+    columns.push(Column::new(
+        "prepare_seconds".into(),
+        runs.iter()
+            .map(|(_, r)| r.output.prepare_seconds)
+            .collect::<Vec<f64>>(),
+    ));
+    columns.push(Column::new(
         "status".into(),
         runs.iter()
             .map(|(_, r)| r.status.clone())
             .collect::<Vec<String>>(),
     ));
     DataFrame::new(runs.len(), columns).context("cannot build runs.parquet")
+}
+
+/// `name`, or if that column is taken `result.<name>` (then `result.<name>.2`,
+/// `.3`, ...): the same names in the same order always get the same columns.
+fn free_name(name: &str, taken: &mut HashSet<String>) -> String {
+    let mut candidate = name.to_string();
+    let mut k = 1;
+    while taken.contains(&candidate) {
+        k += 1;
+        candidate = match k {
+            2 => format!("result.{name}"),
+            _ => format!("result.{name}.{}", k - 1),
+        };
+    }
+    taken.insert(candidate.clone());
+    candidate
 }
 
 fn series_table(runs: &[(RunSpec, RunRecord)]) -> anyhow::Result<DataFrame> {
@@ -246,9 +323,19 @@ fn histograms_table(runs: &[(RunSpec, RunRecord)]) -> anyhow::Result<DataFrame> 
     .context("cannot build histograms.parquet")
 }
 
-/// summary.parquet; parameter columns come from the plan (so text values stay text).
-fn summary_table(specs: &[&RunSpec], summary: &[SummaryRow]) -> anyhow::Result<DataFrame> {
-    let by_point: BTreeMap<u64, &RunSpec> = specs.iter().map(|s| (s.point_id, *s)).collect();
+/// summary.parquet; parameter columns come from the plan (so text values
+/// stay text), the cost from the successful runs behind each point.
+fn summary_table(
+    runs: &[(RunSpec, RunRecord)],
+    summary: &[SummaryRow],
+) -> anyhow::Result<DataFrame> {
+    let mut cost: BTreeMap<u64, (f64, f64)> = BTreeMap::new();
+    for (spec, record) in runs.iter().filter(|(_, r)| r.ok()) {
+        let c = cost.entry(spec.point_id).or_default();
+        c.0 += record.output.cpu_seconds;
+        c.1 += record.output.wall_seconds;
+    }
+    let by_point: BTreeMap<u64, &RunSpec> = runs.iter().map(|(s, _)| (s.point_id, s)).collect();
     let point_specs: Vec<&RunSpec> = summary
         .iter()
         .filter_map(|r| by_point.get(&r.point_id).copied())
@@ -296,7 +383,9 @@ fn summary_table(specs: &[&RunSpec], summary: &[SummaryRow]) -> anyhow::Result<D
         "z".into(),
         summary.iter().map(|r| r.z).collect::<Vec<Option<f64>>>(),
     ));
-    columns.push(f("seconds", &|r| r.seconds));
+    let point_cost = |r: &SummaryRow| cost.get(&r.point_id).copied().unwrap_or_default();
+    columns.push(f("cpu_seconds", &|r| point_cost(r).0));
+    columns.push(f("wall_seconds", &|r| point_cost(r).1));
     columns.push(Column::new(
         "collisions".into(),
         summary.iter().map(|r| r.collisions).collect::<Vec<u64>>(),

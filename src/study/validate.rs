@@ -2,7 +2,7 @@
 //! names its key path so the caller can point at it in the source.
 
 use super::descriptor_types::{Descriptor, Scale, SweepMode, SweepValues};
-use crate::scene::spec::{Mass, SceneSpec, Velocities};
+use crate::scene::spec::SceneSpec;
 
 /// One problem: the key it concerns, what is wrong, what would be right.
 #[derive(Debug, Clone, PartialEq)]
@@ -12,9 +12,9 @@ pub struct Problem {
     pub hint: Option<String>,
 }
 
-type Check = Result<(), Problem>;
+pub type Check = Result<(), Problem>;
 
-fn bad(key: impl Into<String>, message: impl Into<String>, hint: Option<&str>) -> Check {
+pub fn bad(key: impl Into<String>, message: impl Into<String>, hint: Option<&str>) -> Check {
     Err(Problem {
         key: key.into(),
         message: message.into(),
@@ -22,7 +22,7 @@ fn bad(key: impl Into<String>, message: impl Into<String>, hint: Option<&str>) -
     })
 }
 
-fn positive(key: &str, v: f64) -> Check {
+pub fn positive(key: &str, v: f64) -> Check {
     if v.is_finite() && v > 0.0 {
         Ok(())
     } else {
@@ -31,7 +31,7 @@ fn positive(key: &str, v: f64) -> Check {
 }
 
 /// Radii may be 0: point particles (an ideal gas, or MacKay's point rods).
-fn non_negative(key: &str, v: f64) -> Check {
+pub fn non_negative(key: &str, v: f64) -> Check {
     if v.is_finite() && v >= 0.0 {
         Ok(())
     } else {
@@ -43,14 +43,51 @@ fn non_negative(key: &str, v: f64) -> Check {
 /// and seeds shape the plan itself, so they cannot vary within it.
 pub const SWEEPABLE: [&str; 4] = ["scene", "run", "observe", "analysis"];
 
+/// The whole descriptor as one sweep point: `[study]`, the shape of
+/// `[sweep]`, and everything a run of it needs (`point`).
 pub fn descriptor(d: &Descriptor) -> Check {
     study(d)?;
-    run(d)?;
-    scene(&d.scene)?;
-    sweep(d)
+    sweep(d)?;
+    point(d)
 }
 
-fn study(d: &Descriptor) -> Check {
+/// What one sweep point needs to run: `[run]`, the scene after its preset is
+/// resolved, `[observe]` and `[analysis.*]`.
+pub fn point(d: &Descriptor) -> Check {
+    run(d)?;
+    let scene = resolved(&d.scene)?;
+    super::validate_scene::scene(&scene)?;
+    super::validate_observe::observe(d, &scene)?;
+    super::validate_observe::analysis(d, &scene)
+}
+
+/// The scene with its preset applied; an unknown preset is a problem at `scene.preset`.
+pub fn resolved(s: &SceneSpec) -> Result<SceneSpec, Problem> {
+    if let Some(name) = &s.preset
+        && crate::scene::presets::find(name).is_none()
+    {
+        let valid: Vec<String> = crate::scene::presets::names()
+            .iter()
+            .map(|n| n.to_string())
+            .collect();
+        let hint = match super::descriptor::closest(name, &valid) {
+            Some(best) => format!("did you mean \"{best}\"? (`study list` shows every preset)"),
+            None => format!("bundled presets: {}", valid.join(", ")),
+        };
+        return Err(Problem {
+            key: "scene.preset".into(),
+            message: format!("unknown scene preset \"{name}\""),
+            hint: Some(hint),
+        });
+    }
+    crate::scene::resolve(s).map_err(|message| Problem {
+        key: "scene.preset".into(),
+        message,
+        hint: None,
+    })
+}
+
+pub fn study(d: &Descriptor) -> Check {
     let name = &d.study.name;
     let ok = !name.is_empty()
         && !name.starts_with('.')
@@ -74,7 +111,7 @@ fn study(d: &Descriptor) -> Check {
     Ok(())
 }
 
-fn run(d: &Descriptor) -> Check {
+pub fn run(d: &Descriptor) -> Check {
     let r = &d.run;
     match (r.duration, r.collisions) {
         (None, None) => {
@@ -101,141 +138,8 @@ fn run(d: &Descriptor) -> Check {
     Ok(())
 }
 
-fn scene(s: &SceneSpec) -> Check {
-    if let Some(d) = s.dimension
-        && !(1..=3).contains(&d)
-    {
-        return bad(
-            "scene.dimension",
-            format!("must be 1, 2 or 3, got {d}"),
-            Some("1 = rods, 2 = disks, 3 = spheres"),
-        );
-    }
-    let axes = |what: &str, n: usize| -> Check {
-        match s.dimension {
-            Some(d) if d != n => bad(
-                format!("scene.{what}"),
-                format!("has {n} entries but the scene has dimension {d}"),
-                Some("give one entry per axis"),
-            ),
-            None if !(1..=3).contains(&n) => bad(
-                format!("scene.{what}"),
-                format!("has {n} entries; give 1, 2 or 3 (one per axis)"),
-                None,
-            ),
-            _ => Ok(()),
-        }
-    };
-    if let Some(b) = &s.box_size {
-        axes("box", b.len())?;
-        for (i, &l) in b.iter().enumerate() {
-            positive(&format!("scene.box.{i}"), l)?;
-        }
-    }
-    if let Some(b) = &s.boundary {
-        axes("boundary", b.len())?;
-    }
-    for (i, sp) in s.species.iter().enumerate() {
-        let key = |k: &str| format!("scene.species.{i}.{k}");
-        if sp.name.is_empty() {
-            return bad(key("name"), "must not be empty", None);
-        }
-        if s.species[..i].iter().any(|o| o.name == sp.name) {
-            return bad(
-                key("name"),
-                format!("species {:?} is named twice", sp.name),
-                Some("give each species its own name"),
-            );
-        }
-        for r in sp.radius.bounds() {
-            non_negative(&key("radius"), r)?;
-        }
-        match sp.mass {
-            Mass::Fixed(m) => positive(&key("mass"), m)?,
-            Mass::Range([lo, hi]) => {
-                positive(&key("mass"), lo)?;
-                positive(&key("mass"), hi)?;
-                if lo > hi {
-                    return bad(
-                        key("mass"),
-                        format!("range [{lo}, {hi}] is reversed"),
-                        Some("write `[lo, hi]` with lo <= hi"),
-                    );
-                }
-            }
-        }
-        if let Some(r) = &sp.region {
-            if r.from.len() != r.to.len() {
-                return bad(
-                    key("region"),
-                    "`from` and `to` must have the same number of axes",
-                    None,
-                );
-            }
-            axes(&format!("species.{i}.region.from"), r.from.len())?;
-            for (a, (&lo, &hi)) in r.from.iter().zip(&r.to).enumerate() {
-                if !(0.0..=1.0).contains(&lo) || !(0.0..=1.0).contains(&hi) || lo >= hi {
-                    return bad(
-                        key("region"),
-                        format!("axis {a}: [{lo}, {hi}] is not a part of the box"),
-                        Some("regions are fractions of the box: 0 <= from < to <= 1"),
-                    );
-                }
-            }
-        }
-    }
-    match &s.velocities {
-        Some(Velocities::Maxwell {
-            temperature,
-            energy,
-            ..
-        }) => {
-            positive("scene.velocities.temperature", *temperature)?;
-            if let Some(e) = energy {
-                positive("scene.velocities.energy", *e)?;
-            }
-        }
-        Some(Velocities::Uniform { p, energy, .. }) => {
-            positive("scene.velocities.p", *p)?;
-            if let Some(e) = energy {
-                positive("scene.velocities.energy", *e)?;
-            }
-        }
-        _ => {}
-    }
-    if let Some(p) = &s.piston {
-        positive("scene.piston.mass", p.mass)?;
-        non_negative("scene.piston.radius", p.radius)?;
-        if !(p.position > 0.0 && p.position < 1.0) {
-            return bad(
-                "scene.piston.position",
-                format!(
-                    "must be a fraction of the box between 0 and 1, got {}",
-                    p.position
-                ),
-                None,
-            );
-        }
-    }
-    for (i, w) in s.thermal_walls.iter().enumerate() {
-        if let Some(d) = s.dimension
-            && w.axis >= d
-        {
-            return bad(
-                format!("scene.thermal_walls.{i}.axis"),
-                format!("axis {} does not exist in {d} dimensions", w.axis),
-                Some("axes count from 0 (x)"),
-            );
-        }
-        positive(
-            &format!("scene.thermal_walls.{i}.temperature"),
-            w.temperature,
-        )?;
-    }
-    Ok(())
-}
-
-fn sweep(d: &Descriptor) -> Check {
+/// The shape of `[sweep]`: values present, ranges sound, zip lengths equal.
+pub fn sweep(d: &Descriptor) -> Check {
     let Some(sweep) = &d.sweep else { return Ok(()) };
     if sweep.parameters.is_empty() {
         return bad(
@@ -251,7 +155,22 @@ fn sweep(d: &Descriptor) -> Check {
             SweepValues::List(v) if v.is_empty() => {
                 return bad(at, "has no values", Some("give at least one value"));
             }
-            SweepValues::List(v) => v.len(),
+            SweepValues::List(v) => {
+                if sweep.mode == SweepMode::Product
+                    && let Some((i, x)) = v.iter().enumerate().find(|(i, x)| v[..*i].contains(x))
+                {
+                    return bad(
+                        at,
+                        format!(
+                            "value {} is listed twice (items {} and {i})",
+                            super::descriptor::show(x),
+                            v.iter().position(|y| y == x).unwrap_or(0)
+                        ),
+                        Some("remove the repeat: both points would run with the same seeds"),
+                    );
+                }
+                v.len()
+            }
             SweepValues::Range(r) => {
                 if r.steps == 0 {
                     return bad(at, "range needs `steps >= 1`", None);
@@ -264,7 +183,24 @@ fn sweep(d: &Descriptor) -> Check {
                     );
                 }
                 if !r.from.is_finite() || !r.to.is_finite() {
-                    return bad(at, "range bounds must be finite numbers", None);
+                    return bad(
+                        at,
+                        format!(
+                            "range bounds must be finite numbers, got from = {}, to = {}",
+                            r.from, r.to
+                        ),
+                        None,
+                    );
+                }
+                if r.from == r.to && r.steps > 1 {
+                    return bad(
+                        at,
+                        format!(
+                            "from = to = {} with {} steps repeats one value",
+                            r.from, r.steps
+                        ),
+                        Some("use `steps = 1`, or different bounds"),
+                    );
                 }
                 if r.scale == Scale::Log && (r.from <= 0.0 || r.to <= 0.0) {
                     return bad(

@@ -16,14 +16,14 @@ seed = 42
 
 [scene]
 dimension = 1
-box = [20.0]
+box = [40.0]
 boundary = ["walls"]
 
 [[scene.species]]
 name = "gas"
 count = 10
 mass = 1.0
-
+region = { from = [0.0], to = [0.45] }
 [scene.piston]
 mass = 5.0
 position = 0.5
@@ -45,8 +45,8 @@ equilibrate = 10.0
 sample_every = 0.5
 
 [observe]
-scalars = ["frequency"]
-series = ["piston_x"]
+scalars = ["wall_pressure"]
+series = ["piston_position"]
 
 [quick]
 "study.replicas" = 1
@@ -91,6 +91,8 @@ pub fn fake(spec: &RunSpec) -> anyhow::Result<RunOutput> {
         events: s % 1000 + 10,
         collisions: s % 500 + 5,
         wall_seconds: 0.0,
+        cpu_seconds: 0.0,
+        prepare_seconds: 0.0,
     })
 }
 
