@@ -211,7 +211,7 @@ pub fn mackay_case(d: &Descriptor, out_dir: &Path) -> anyhow::Result<String> {
         r_in = pm(ratio_inertia.mean, ratio_inertia.stderr),
         r_iso = pm(ratio_iso.mean, ratio_iso.stderr),
         verdict = verdict(&ratio, &ratio_inertia, &ratio_iso),
-        speed = pm(speed.mean, speed.stderr),
+        speed = num(speed.mean),
         slow = if speed.mean < 0.3 {
             "the compression is slow, as the adiabatic picture assumes"
         } else {

@@ -470,12 +470,14 @@ fn relaxation(points: &[Point], out_dir: &Path) -> anyhow::Result<String> {
             });
             let _ = writeln!(
                 fits,
-                "| {group} | {}–{} | {} | {} | {} |",
+                "| {group} | {}–{} | {} | {} | {} | {:.1} | {} |",
                 num(lo),
                 num(hi),
                 logs.len(),
                 pm(b, se),
-                num(chi2)
+                num(chi2),
+                relaxed.iter().map(|p| p.seconds).sum::<f64>(),
+                count(relaxed.iter().map(|p| p.collisions).sum()),
             );
         }
     }
@@ -512,7 +514,7 @@ fn relaxation(points: &[Point], out_dir: &Path) -> anyhow::Result<String> {
             md,
             "Power law τ ∝ M^b fitted (weighted least squares in log–log, error scaled by sqrt(χ²/dof) where \
              the points scatter more than their error bars) over the points where every run relaxed:\n\n\
-             | group | M from–to | points | exponent b | χ²/dof |\n|---|---|---|---|---|\n{fits}\n"
+             | group | M from–to | points | exponent b | χ²/dof | CPU s | collisions |\n|---|---|---|---|---|---|---|\n{fits}\n"
         );
     }
     let heaviest: Vec<&Point> = points.iter().filter(|p| !p.relaxed()).collect();
