@@ -219,7 +219,7 @@ pub fn mackay_case(d: &Descriptor, out_dir: &Path) -> anyhow::Result<String> {
         },
         tau = pm(tau.mean, tau.stderr),
         taun = tau.n,
-        cycles = num(tau.mean * measured.mean / std::f64::consts::TAU),
+        cycles = format!("{:.1}", tau.mean * measured.mean / std::f64::consts::TAU),
     );
     text.push_str(&md);
     Ok(text)

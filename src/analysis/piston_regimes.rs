@@ -248,7 +248,7 @@ fn boundaries(points: &[Point]) -> String {
     }
     md.push_str(
         "\nThe physical parameter is M/M_gas, the piston's mass over the gases' (M_gas = both sides): the \
-         period over the gas's sound-crossing time X/c is 2π·sqrt(M/(2 M_gas)) for a symmetric piston, so a \
+         period over the gas's sound-crossing time X/c is 2π·sqrt(M/M_gas) for a symmetric piston (c² = γkT/m), so a \
          light piston oscillates as fast as the gas can carry the compression across, and the gas's own inertia \
          adds M_gas/3 to the piston's (the frequency falls by about M_gas/(6M)). The speed ratio (peak piston \
          speed over the gases' thermal speed) measures how far from slow the compression is; it grows with the \
