@@ -189,7 +189,7 @@ pub fn mackay_case(d: &Descriptor, out_dir: &Path) -> anyhow::Result<String> {
          back when the piston returns. What is lost is the part that is not: particles arriving at \
          different phases, and collisions within each gas that share the energy out. Here the piston gives \
          away 63% of its excess oscillator energy in τ = {tau} time units (n = {taun} of {REPLICAS}), about \
-         {cycles} periods; the sweep below shows how that time grows with M.\n\n",
+         {cycles:.1} periods; the sweep below shows how that time grows with M.\n\n",
         share = 100.0 * stat("initial_piston_share").mean,
         coll = count(cost_collisions),
         secs = cost_seconds,
@@ -219,7 +219,7 @@ pub fn mackay_case(d: &Descriptor, out_dir: &Path) -> anyhow::Result<String> {
         },
         tau = pm(tau.mean, tau.stderr),
         taun = tau.n,
-        cycles = format!("{:.1}", tau.mean * measured.mean / std::f64::consts::TAU),
+        cycles = tau.mean * measured.mean / std::f64::consts::TAU,
     );
     text.push_str(&md);
     Ok(text)

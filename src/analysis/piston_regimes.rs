@@ -23,6 +23,7 @@ struct Point {
     mass: f64,
     runs: usize,
     duration: f64,
+    sample_every: f64,
     stats: BTreeMap<&'static str, Stats>,
     equipartition: f64,
     seconds: f64,
@@ -38,6 +39,8 @@ const RESULTS: &[&str] = &[
     "relaxation_time",
     "excess_left",
     "piston_share",
+    "frequency",
+    "frequency_periods",
 ];
 
 fn points(runs: &[(RunSpec, RunOutput)]) -> Vec<Point> {
@@ -72,6 +75,7 @@ fn points(runs: &[(RunSpec, RunOutput)]) -> Vec<Point> {
                 mass: rs[0].1.scalar("mass_ratio").unwrap_or(f64::NAN),
                 runs: rs.len(),
                 duration: spec.descriptor.run.duration.unwrap_or(f64::NAN),
+                sample_every: spec.descriptor.run.sample_every.unwrap_or(f64::NAN),
                 stats,
                 equipartition: super::piston::theory(&spec.descriptor, "piston_share")
                     .unwrap_or(f64::NAN),
@@ -161,6 +165,7 @@ pub fn regimes(runs: &[(RunSpec, RunOutput)], out_dir: &Path) -> anyhow::Result<
         md,
         "![Measured frequency over the nonlinear adiabatic prediction against the piston's mass over the gases' mass (mean ± standard error per sweep point); the curve is the gases'-inertia correction sqrt(M/(M + M_gas/3)) for small oscillations.]({name})\n"
     );
+    md.push_str(&resolution(&points));
     md.push_str(&table(&points));
     md.push_str("\n### How the piston relaxes, and how a very heavy one ever could\n\n");
     md.push_str(&relaxation(&points, out_dir)?);
@@ -255,6 +260,42 @@ fn boundaries(points: &[Point]) -> String {
          starting energy and falls as 1/sqrt(M).\n\n",
     );
     md
+}
+
+/// How well the sampling resolves the frequency at the worst point: linear
+/// interpolation between samples dt apart places a crossing within
+/// (omega dt)^2 / (8 omega), so K periods give omega to (omega dt)^2/(8 pi K)
+/// relative (the bound `piston_estimators` tests).
+fn resolution(points: &[Point]) -> String {
+    // (samples per period, relative bound, bound over the relative error bar)
+    let worst = points
+        .iter()
+        .map(|p| {
+            let omega = p.stat("frequency");
+            let periods = p.stat("frequency_periods").mean.max(1.0);
+            let step = omega.mean * p.sample_every;
+            let bound = step * step / (8.0 * std::f64::consts::PI * periods);
+            (
+                std::f64::consts::TAU / step,
+                bound,
+                bound / (omega.stderr / omega.mean),
+            )
+        })
+        .filter(|w| w.0.is_finite())
+        .fold((f64::INFINITY, 0.0f64, 0.0f64), |w, v| {
+            (w.0.min(v.0), w.1.max(v.1), w.2.max(v.2))
+        });
+    if worst.0.is_finite() {
+        format!(
+            "Sampling: at least {:.0} samples per measured period at every point, so interpolating the \
+             crossings limits the frequency to {:.1e} relative, at most {:.0}% of a point's standard error.\n\n",
+            worst.0,
+            worst.1,
+            100.0 * worst.2
+        )
+    } else {
+        String::new()
+    }
 }
 
 fn table(points: &[Point]) -> String {
