@@ -4,7 +4,10 @@
 //! part of the report.
 
 pub mod piston;
+pub mod piston_estimators;
 mod piston_pictures;
+mod piston_regimes;
+pub mod piston_state;
 pub mod summary;
 pub mod summary_types;
 

@@ -6,6 +6,7 @@ mod heat;
 mod histogram;
 mod pressure;
 mod sampled;
+mod sides;
 
 use crate::engine::{Observer, PairCollision, Snapshot, WallHit};
 use crate::study::output::RunOutput;
@@ -14,6 +15,7 @@ pub use heat::WallHeat;
 pub use histogram::ScaledVelocity;
 pub use pressure::{VirialPressure, WallPressure};
 pub use sampled::Sampled;
+pub use sides::SideEnergies;
 
 /// What a measurement needs to know about the run when it reports.
 pub struct Context<'a> {
@@ -116,6 +118,11 @@ pub const CATALOGUE: &[(&str, &str, &str)] = &[
     ("series", "piston_position", "position of the piston"),
     (
         "series",
+        "gas_energy_by_side",
+        "kinetic energy of the gas left and right of the piston (gas_energy.<side>)",
+    ),
+    (
+        "series",
         "positions",
         "x coordinate of every particle (x.<index>), for space-time diagrams",
     ),
@@ -177,7 +184,10 @@ pub fn build<const D: usize>(
     let mut sampled: Vec<String> = Vec::new();
     for name in series {
         check("series", name)?;
-        sampled.push(name.clone());
+        match name.as_str() {
+            "gas_energy_by_side" => measures.push(Box::new(SideEnergies::new(piston))),
+            _ => sampled.push(name.clone()),
+        }
     }
     for name in scalars {
         check("scalars", name)?;

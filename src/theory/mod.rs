@@ -1,6 +1,7 @@
 //! Theory predictions, one file each, set beside measurements in the summary.
 
 pub mod piston;
+pub mod piston_equilibrium;
 
 use crate::study::descriptor_types::Descriptor;
 

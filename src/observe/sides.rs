@@ -1,0 +1,61 @@
+//! Kinetic energy of the gas on each side of the piston (`gas_energy.left`,
+//! `gas_energy.right`): what the piston analysis needs to follow each gas
+//! along its adiabat, whatever species the gases are made of.
+
+use super::{Context, Measure};
+use crate::engine::{Observer, Snapshot};
+use crate::study::output::{RunOutput, Series};
+
+pub struct SideEnergies {
+    piston: Option<usize>,
+    t: Vec<f64>,
+    left: Vec<f64>,
+    right: Vec<f64>,
+}
+
+impl SideEnergies {
+    pub fn new(piston: Option<usize>) -> Self {
+        SideEnergies {
+            piston,
+            t: Vec::new(),
+            left: Vec::new(),
+            right: Vec::new(),
+        }
+    }
+}
+
+impl<const D: usize> Observer<D> for SideEnergies {
+    fn sample(&mut self, s: &Snapshot<D>) {
+        let Some(p) = self.piston else { return };
+        let wall = s.position(p)[0];
+        let (mut left, mut right) = (0.0, 0.0);
+        for (i, q) in s.particles.iter().enumerate() {
+            if i == p || q.is_immovable() {
+                continue;
+            }
+            if s.position(i)[0] < wall {
+                left += q.kinetic_energy();
+            } else {
+                right += q.kinetic_energy();
+            }
+        }
+        self.t.push(s.time);
+        self.left.push(left);
+        self.right.push(right);
+    }
+}
+
+impl<const D: usize> Measure<D> for SideEnergies {
+    fn uses_samples(&self) -> bool {
+        true
+    }
+    fn finish(self: Box<Self>, _ctx: &Context, out: &mut RunOutput) {
+        for (side, value) in [("left", self.left), ("right", self.right)] {
+            out.series.push(Series {
+                observable: format!("gas_energy.{side}"),
+                t: self.t.clone(),
+                value,
+            });
+        }
+    }
+}
