@@ -31,18 +31,23 @@ pub struct Options {
 }
 
 impl Options {
+    /// The descriptor's values; defaults (and the checks every value has
+    /// passed) are in `crate::study::analyses`.
     pub fn of(d: &Descriptor) -> Options {
-        let get = |key: &str, default: f64| {
-            d.analysis
-                .get("piston")
-                .and_then(|t| t.get(key))
+        let get = |key: &str| {
+            let given = d.analysis.get("piston").and_then(|t| t.get(key));
+            given
                 .and_then(|v| v.as_float().or(v.as_integer().map(|i| i as f64)))
-                .unwrap_or(default)
+                .or_else(|| {
+                    let piston = crate::study::analyses::find("piston")?;
+                    Some(piston.options.iter().find(|o| o.name == key)?.default)
+                })
+                .unwrap_or(f64::NAN)
         };
         Options {
-            periods: get("window_periods", 4.0).max(1.0) as usize,
-            band: get("band", 0.1),
-            late: get("late_fraction", 0.5),
+            periods: get("window_periods").max(1.0) as usize,
+            band: get("band"),
+            late: get("late_fraction"),
         }
     }
 }

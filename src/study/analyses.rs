@@ -47,7 +47,14 @@ pub const ANALYSES: &[Analysis] = &[Analysis {
             above: 0.0,
             at_most: f64::INFINITY,
             default: 4.0,
-            about: "adiabatic periods from the start over which the frequency is measured",
+            about: "full periods of the piston's motion, from the start, over which the frequency is measured",
+        },
+        AnalysisOption {
+            name: "band",
+            above: 0.0,
+            at_most: 0.5,
+            default: 0.1,
+            about: "hysteresis band for turning points, as a fraction of the piston position's range",
         },
         AnalysisOption {
             name: "late_fraction",
