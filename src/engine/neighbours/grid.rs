@@ -1,7 +1,8 @@
-//! A grid of cells, each a linked list of the points filed in it, for finding
-//! every point within one cell width of another in O(1). On periodic axes the
-//! grid wraps, and a point found across the boundary comes with the image
-//! code of the shift that brings it next to the one asked about.
+//! A grid of cells, each holding its points with their positions side by
+//! side, for finding every point within one cell width of another in O(1)
+//! and in a few contiguous reads. On periodic axes the grid wraps, and a
+//! point found across the boundary comes with the image code of the shift
+//! that brings it next to the one asked about.
 
 use super::Image;
 use crate::engine::boundary::SimBox;
@@ -16,13 +17,11 @@ pub struct Grid<const D: usize> {
     periodic: [bool; D],
     /// Linear-index stride per axis.
     stride: [usize; D],
-    head: Vec<u32>,
-    next: Vec<u32>,
-    prev: Vec<u32>,
+    /// Each cell's points and where they are.
+    cells: Vec<Vec<(u32, Vector<D>)>>,
     /// Each point's cell.
     cell: Vec<u32>,
 }
-
 impl<const D: usize> Grid<D> {
     /// A grid for `points` points whose cells are at least `min_width` wide,
     /// but no more than a few cells per point in all, so a dilute gas in a
@@ -56,9 +55,7 @@ impl<const D: usize> Grid<D> {
             width: std::array::from_fn(|k| sim_box.size[k] / n[k] as f64),
             periodic: std::array::from_fn(|k| sim_box.axes[k].is_periodic()),
             stride,
-            head: vec![NONE; stride[D - 1] * n[D - 1] as usize],
-            next: vec![NONE; points],
-            prev: vec![NONE; points],
+            cells: vec![Vec::new(); stride[D - 1] * n[D - 1] as usize],
             cell: vec![NONE; points],
         }
     }
@@ -67,86 +64,89 @@ impl<const D: usize> Grid<D> {
         std::array::from_fn(|k| ((x[k] / self.width[k]).floor().max(0.0) as u32).min(self.n[k] - 1))
     }
 
-    /// File point `i` (or move it) at position `x`, which lies in the box.
+    /// File point `i` at position `x`, which lies in the box (moving it if
+    /// it was filed before).
     pub fn place(&mut self, i: usize, x: &Vector<D>) {
         let c = self.coords(x);
         let cell = (0..D)
             .map(|k| c[k] as usize * self.stride[k])
-            .sum::<usize>() as u32;
-        if self.cell[i] == cell {
-            return;
-        }
+            .sum::<usize>();
+        let old = self.cell[i] as usize;
         if self.cell[i] != NONE {
-            self.unlink(i);
+            let members = &mut self.cells[old];
+            let at = members.iter().position(|m| m.0 == i as u32).expect("filed");
+            if old == cell {
+                members[at].1 = *x;
+                return;
+            }
+            members.swap_remove(at);
         }
-        self.cell[i] = cell;
-        let h = self.head[cell as usize];
-        self.next[i] = h;
-        self.prev[i] = NONE;
-        if h != NONE {
-            self.prev[h as usize] = i as u32;
-        }
-        self.head[cell as usize] = i as u32;
+        self.cell[i] = cell as u32;
+        self.cells[cell].push((i as u32, *x));
     }
 
-    fn unlink(&mut self, i: usize) {
-        let (p, nx) = (self.prev[i], self.next[i]);
-        if p != NONE {
-            self.next[p as usize] = nx;
-        } else {
-            self.head[self.cell[i] as usize] = nx;
-        }
-        if nx != NONE {
-            self.prev[nx as usize] = p;
-        }
-    }
-
-    /// Call `f(j, image)` for every point j filed in the 3^D cells around
-    /// position `x` (x itself may be filed there too).
-    pub fn for_each_near(&self, x: &Vector<D>, mut f: impl FnMut(usize, Image)) {
+    /// Call `f(j, image, x_j)` for every point j (at x_j) filed in the 3^D
+    /// cells around position `x` (x itself may be filed there too).
+    pub fn for_each_near(&self, x: &Vector<D>, mut f: impl FnMut(usize, Image, &Vector<D>)) {
         let c = self.coords(x);
-        // Walk the neighbouring cells; `offset` counts in base 3.
-        'cells: for offset in 0..3usize.pow(D as u32) {
-            let mut rest = offset;
-            let mut cell = 0usize;
-            let mut image: Image = 0;
-            let mut place = 1u8;
-            for k in 0..D {
-                let mut ck = c[k] as i64 + (rest % 3) as i64 - 1;
-                rest /= 3;
+        // Per axis, the (up to) three neighbouring rows: their part of the
+        // linear cell index and of the image code.
+        let mut rows = [[(0usize, 0u8); 3]; D];
+        let mut count = [0usize; D];
+        let mut place = 1u8;
+        for k in 0..D {
+            for offset in [-1i64, 0, 1] {
+                let mut ck = c[k] as i64 + offset;
                 let mut digit = 1u8;
                 if ck < 0 || ck >= self.n[k] as i64 {
                     if !self.periodic[k] {
-                        continue 'cells;
+                        continue;
                     }
                     digit = if ck < 0 { 0 } else { 2 };
                     ck = ck.rem_euclid(self.n[k] as i64);
                 }
-                cell += ck as usize * self.stride[k];
-                image += digit * place;
-                place *= 3;
+                rows[k][count[k]] = (ck as usize * self.stride[k], digit * place);
+                count[k] += 1;
             }
-            let mut j = self.head[cell];
-            while j != NONE {
-                f(j as usize, image);
-                j = self.next[j as usize];
+            place *= 3;
+        }
+        // Every combination of rows, odometer style.
+        let mut at = [0usize; D];
+        loop {
+            let (mut cell, mut image) = (0usize, 0 as Image);
+            for k in 0..D {
+                cell += rows[k][at[k]].0;
+                image += rows[k][at[k]].1;
+            }
+            for (j, x_j) in &self.cells[cell] {
+                f(*j as usize, image, x_j);
+            }
+            let mut k = 0;
+            loop {
+                at[k] += 1;
+                if at[k] < count[k] {
+                    break;
+                }
+                at[k] = 0;
+                k += 1;
+                if k == D {
+                    return;
+                }
             }
         }
     }
 
-    /// Call `f(j)` for every point filed in the slab of cells whose axis-0
-    /// range meets [lo, hi].
-    pub fn for_each_in_slab(&self, lo: f64, hi: f64, mut f: impl FnMut(usize)) {
+    /// Call `f(j, x_j)` for every point filed in the slab of cells whose
+    /// axis-0 range meets [lo, hi].
+    pub fn for_each_in_slab(&self, lo: f64, hi: f64, mut f: impl FnMut(usize, &Vector<D>)) {
         let first = ((lo / self.width[0]).floor().max(0.0) as u32).min(self.n[0] - 1);
         let last = ((hi / self.width[0]).floor().max(0.0) as u32).min(self.n[0] - 1);
         let rest: usize = (1..D).map(|k| self.n[k] as usize).product();
         for c0 in first..=last {
             // Cells sharing an axis-0 index are n[0] apart in the linear order.
             for r in 0..rest {
-                let mut j = self.head[c0 as usize + r * self.n[0] as usize];
-                while j != NONE {
-                    f(j as usize);
-                    j = self.next[j as usize];
+                for (j, x_j) in &self.cells[c0 as usize + r * self.n[0] as usize] {
+                    f(*j as usize, x_j);
                 }
             }
         }

@@ -1,8 +1,9 @@
 //! 2D/3D: neighbour lists with a shell (after Donev, Torquato and Stillinger,
 //! J. Comput. Phys. 202, 737, 2005, and Smallenburg, EPJE 45, 22, 2022).
 //!
-//! Each particle owns a neighbourhood: the ball of radius r + shell around its
-//! *centre*, the position it had when its list was last renewed. While a
+//! Each particle owns a neighbourhood: the ball of the largest radius plus
+//! the shell around its *centre*, the position it had when its list was last
+//! renewed (the same size for all, so the lists stay symmetric). While a
 //! particle stays inside its neighbourhood it can only touch particles whose
 //! neighbourhoods overlap its own, so its list holds exactly those: a handful
 //! at any density. When it reaches the edge of its neighbourhood (an event
@@ -29,7 +30,7 @@ use crate::engine::vector::{Vector, axis0, dot, norm2, sub};
 const IMAGE_BITS: u32 = 5;
 const MAX_PARTICLES: usize = 1 << (32 - IMAGE_BITS);
 /// The shell in ideal-gas mean free paths (tuned on the benchmark systems).
-const SHELL_PER_FREE_PATH: f64 = 1.0;
+const SHELL_PER_FREE_PATH: f64 = 0.8;
 
 #[inline(always)]
 fn pack(j: usize, image: Image) -> u32 {
@@ -59,8 +60,11 @@ pub struct NeighbourList<const D: usize, const PLANES: bool = false> {
     size: Vector<D>,
     periodic: [bool; D],
     shifts: Vec<Vector<D>>,
-    radius: Vec<f64>,
-    largest_radius: f64,
+    /// How far apart two centres may be for a pair to count as neighbours:
+    /// twice the largest radius and the shell, the same for every pair so
+    /// that lists stay symmetric (`plane_reach` for a pair with the plane).
+    reach: f64,
+    plane_reach: f64,
     centre: Vec<Vector<D>>,
     /// The centres of every particle but the plane.
     grid: Grid<D>,
@@ -73,6 +77,7 @@ pub struct NeighbourList<const D: usize, const PLANES: bool = false> {
     plane_list: Vec<u32>,
     /// Room to work in while renewing, kept to spare an allocation each time.
     scratch: Vec<u32>,
+    scratch_old: Vec<u32>,
 }
 
 impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
@@ -119,16 +124,16 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         &self.entries[i * self.cap..i * self.cap + self.len[i] as usize]
     }
 
-    /// Do the neighbourhoods of i and j (j's image `image`) overlap?
-    fn overlap(&self, i: usize, j: usize, image: Image) -> bool {
-        let reach = self.radius[i] + self.radius[j] + 2.0 * self.shell;
+    /// Do the neighbourhoods of i and of j (as image `image`, its centre at
+    /// `c_j`) overlap? Each is a ball of the largest radius and the shell.
+    #[inline(always)]
+    fn overlap(&self, i: usize, image: Image, c_j: &Vector<D>) -> bool {
         if PLANES && image == PLANE {
-            let gap = self.centre[j][0] - self.centre[i][0];
-            return gap.abs() < reach;
+            return (c_j[0] - self.centre[i][0]).abs() < self.plane_reach;
         }
         let s = &self.shifts[image as usize];
-        let r: Vector<D> = std::array::from_fn(|k| self.centre[j][k] + s[k] - self.centre[i][k]);
-        norm2(&r) < reach * reach
+        let r: Vector<D> = std::array::from_fn(|k| c_j[k] + s[k] - self.centre[i][k]);
+        norm2(&r) < self.reach * self.reach
     }
 
     /// Put `e` into list i, keeping it sorted.
@@ -183,20 +188,21 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         found.clear();
         let c = &self.centre[i];
         if PLANES && Some(i) == self.plane {
-            let reach = self.radius[i] + self.largest_radius + 2.0 * self.shell;
-            self.grid.for_each_in_slab(c[0] - reach, c[0] + reach, |j| {
-                if self.overlap(i, j, PLANE) {
-                    found.push(pack(j, PLANE));
-                }
-            });
+            let reach = self.plane_reach;
+            self.grid
+                .for_each_in_slab(c[0] - reach, c[0] + reach, |j, c_j| {
+                    if self.overlap(i, PLANE, c_j) {
+                        found.push(pack(j, PLANE));
+                    }
+                });
         } else {
-            self.grid.for_each_near(c, |j, image| {
-                if j != i && self.overlap(i, j, image) {
+            self.grid.for_each_near(c, |j, image, c_j| {
+                if j != i && self.overlap(i, image, c_j) {
                     found.push(pack(j, image));
                 }
             });
             if let Some(k) = self.plane.filter(|_| PLANES)
-                && self.overlap(i, k, PLANE)
+                && self.overlap(i, PLANE, &self.centre[k])
             {
                 found.push(pack(k, PLANE));
             }
@@ -205,25 +211,50 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
     }
 
     /// Renew i's list around its current centre, and its partners' lists.
+    /// Most partners stay partners, so only the differences between the old
+    /// list and the new (both sorted) touch other lists.
     fn relist(&mut self, i: usize) {
-        let mut buf = std::mem::take(&mut self.scratch);
-        buf.clear();
+        let mut new = std::mem::take(&mut self.scratch);
+        let mut old = std::mem::take(&mut self.scratch_old);
+        self.find(i, &mut new);
+        old.clear();
         if PLANES && Some(i) == self.plane {
-            buf.append(&mut self.plane_list);
+            old.extend_from_slice(&self.plane_list);
         } else {
-            buf.extend_from_slice(self.list(i));
-            self.len[i] = 0;
+            old.extend_from_slice(self.list(i));
         }
-        for &e in &buf {
-            self.remove(unpack(e).0, i);
+        let (mut a, mut b) = (0, 0);
+        while a < old.len() || b < new.len() {
+            let key = |e: Option<&u32>| e.map_or(usize::MAX, |&e| unpack(e).0);
+            let (j_old, j_new) = (key(old.get(a)), key(new.get(b)));
+            if j_old < j_new {
+                self.remove(j_old, i);
+                a += 1;
+            } else if j_new < j_old {
+                self.insert(j_new, pack(i, mirror::<D>(unpack(new[b]).1)));
+                b += 1;
+            } else {
+                if old[a] != new[b] {
+                    // Same partner, new image (i wrapped round the box).
+                    self.remove(j_new, i);
+                    self.insert(j_new, pack(i, mirror::<D>(unpack(new[b]).1)));
+                }
+                a += 1;
+                b += 1;
+            }
         }
-        self.find(i, &mut buf);
-        for &e in &buf {
-            let (j, image) = unpack(e);
-            self.insert(i, e);
-            self.insert(j, pack(i, mirror::<D>(image)));
+        if PLANES && Some(i) == self.plane {
+            self.plane_list.clear();
+            self.plane_list.extend_from_slice(&new);
+        } else {
+            while new.len() > self.cap {
+                self.grow();
+            }
+            self.entries[i * self.cap..i * self.cap + new.len()].copy_from_slice(&new);
+            self.len[i] = new.len() as u32;
         }
-        self.scratch = buf;
+        self.scratch = new;
+        self.scratch_old = old;
     }
 
     /// Build every list from the centres.
@@ -284,8 +315,8 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
             shifts: (0..3u32.pow(D as u32))
                 .map(|c| image_shift(c as Image, &sim_box.size))
                 .collect(),
-            radius: particles.iter().map(|p| p.radius).collect(),
-            largest_radius,
+            reach: 2.0 * (largest_radius + shell),
+            plane_reach: plane.map_or(0.0, |k| particles[k].radius) + largest_radius + 2.0 * shell,
             centre: particles.iter().map(|p| p.pos).collect(),
             grid: Grid::new(n, 2.0 * (largest_radius + shell), sim_box),
             cap: 8,
@@ -294,6 +325,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
             plane,
             plane_list: Vec::new(),
             scratch: Vec::new(),
+            scratch_old: Vec::new(),
         };
         lists.list_all();
         Ok(lists)
