@@ -46,6 +46,19 @@ pub fn bounce<const D: usize>(
 /// collides now; a receding pair never collides (Bannerman et al. 2014).
 #[inline(always)]
 pub fn contact_time<const D: usize>(r: &Vector<D>, v: &Vector<D>, sigma: f64) -> Option<f64> {
+    contact_time_before(r, v, sigma, f64::INFINITY)
+}
+
+/// `contact_time`, but only if it comes before `limit`: a prediction that
+/// already has an earlier event can skip the square root and the division
+/// for most partners, since the time is at least c / (2|b|).
+#[inline(always)]
+pub fn contact_time_before<const D: usize>(
+    r: &Vector<D>,
+    v: &Vector<D>,
+    sigma: f64,
+    limit: f64,
+) -> Option<f64> {
     let b = dot(r, v);
     if b >= 0.0 {
         return None;
@@ -53,6 +66,9 @@ pub fn contact_time<const D: usize>(r: &Vector<D>, v: &Vector<D>, sigma: f64) ->
     let c = dot(r, r) - sigma * sigma;
     if c <= 0.0 {
         return Some(0.0);
+    }
+    if c >= -2.0 * b * limit {
+        return None;
     }
     let v2 = dot(v, v);
     let disc = b * b - v2 * c;

@@ -18,7 +18,7 @@ const IN_LIST: u32 = 1 << 31;
 const NONE: u32 = u32::MAX;
 /// Events per bucket the width aims at: enough to keep the lists cheap to
 /// walk, few enough that the heap stays a few levels deep.
-const EVENTS_PER_BUCKET: f64 = 8.0;
+const EVENTS_PER_BUCKET: f64 = 4.0;
 /// The ring covers about this many mean times-to-event.
 const HORIZON: f64 = 8.0;
 

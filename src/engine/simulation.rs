@@ -10,7 +10,7 @@ use rand_chacha::ChaCha8Rng;
 
 use super::boundary::{SimBox, Wall, wall_time};
 use super::build::{BuildError, check_overlaps, validate};
-use super::collide::{bounce, contact_time, line_contact_time};
+use super::collide::{bounce, contact_time_before, line_contact_time};
 use super::neighbours::{Image, Neighbourhood, PLANE, image_shift, no_shift, separation};
 use super::observer::{Observer, PairCollision, Snapshot, WallHit};
 use super::particle::Particle;
@@ -380,7 +380,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             let dt = if D == 1 {
                 line_contact_time(r[0], -v[0], line_side(i, j, image), sigma)
             } else {
-                contact_time(&r, &v, sigma)
+                contact_time_before(&r, &v, sigma, best_t - now)
             };
             if let Some(dt) = dt {
                 let t = now + dt;
