@@ -54,6 +54,8 @@ pub struct EventQueue {
     inv_width: f64,
     /// The heap's bucket.
     current: u64,
+    /// Ring length - 1 (the ring's length is a power of two).
+    mask: usize,
 }
 
 impl EventQueue {
@@ -76,6 +78,7 @@ impl EventQueue {
             base: 0.0,
             inv_width: 1.0,
             current: 0,
+            mask: 0,
         };
         q.rebuild();
         q
@@ -100,7 +103,8 @@ impl EventQueue {
     #[inline]
     pub fn set(&mut self, i: usize, t: f64) {
         let k = self.slot[i];
-        if k & IN_LIST == 0 && t.is_finite() && self.bucket(t) <= self.current {
+        let b = self.bucket(t);
+        if k & IN_LIST == 0 && b <= self.current && t.is_finite() {
             // Stays in the heap: move it up or down in place.
             let old = self.time[i];
             self.time[i] = t;
@@ -110,10 +114,10 @@ impl EventQueue {
             } else {
                 self.sift_down(k as usize)
             }
-        } else {
-            self.remove(i);
-            self.insert(i, t);
+            return;
         }
+        self.remove(i);
+        self.file(i, t, b);
         if self.heap.is_empty() {
             self.refill();
         }
@@ -139,7 +143,7 @@ impl EventQueue {
     }
 
     fn ring_len(&self) -> usize {
-        self.heads.len() - 1
+        self.mask + 1
     }
 
     /// Choose the bucket width from the events now queued, then file them all.
@@ -173,6 +177,7 @@ impl EventQueue {
         self.inv_width = 1.0 / width;
         self.current = 0;
         self.heads = vec![NONE; ring + 1];
+        self.mask = ring - 1;
         self.heap.clear();
         self.in_ring = 0;
         self.in_overflow = 0;
@@ -186,12 +191,17 @@ impl EventQueue {
     }
 
     fn insert(&mut self, i: usize, t: f64) {
+        self.file(i, t, self.bucket(t));
+    }
+
+    /// File particle i's event at time t, in bucket b.
+    #[inline(always)]
+    fn file(&mut self, i: usize, t: f64, b: u64) {
         self.time[i] = t;
         if t == f64::INFINITY {
             self.slot[i] = PARKED;
             return;
         }
-        let b = self.bucket(t);
         if b <= self.current {
             let k = self.heap.len();
             self.heap.push(Entry {
@@ -200,9 +210,9 @@ impl EventQueue {
             });
             self.slot[i] = k as u32;
             self.sift_up(k);
-        } else if b - self.current < self.ring_len() as u64 {
+        } else if b - self.current <= self.mask as u64 {
             self.in_ring += 1;
-            self.link(i, (b as usize) & (self.ring_len() - 1));
+            self.link(i, b as usize & self.mask);
         } else {
             self.in_overflow += 1;
             self.link(i, self.ring_len());
@@ -280,7 +290,7 @@ impl EventQueue {
                 continue;
             }
             self.current += 1;
-            let slot = (self.current as usize) & (self.ring_len() - 1);
+            let slot = self.current as usize & self.mask;
             if slot == 0 {
                 self.file_overflow();
             }
