@@ -55,9 +55,18 @@ impl<const D: usize> Grid<D> {
             width: std::array::from_fn(|k| sim_box.size[k] / n[k] as f64),
             periodic: std::array::from_fn(|k| sim_box.axes[k].is_periodic()),
             stride,
-            cells: vec![Vec::new(); stride[D - 1] * n[D - 1] as usize],
+            cells: Self::empty_cells(stride[D - 1] * n[D - 1] as usize, points),
             cell: vec![NONE; points],
         }
+    }
+
+    /// Empty cells with room for twice their expected share of the points,
+    /// allocated one after the other: neighbouring cells then sit close in
+    /// memory, which matters once the system outgrows the caches (few cells
+    /// ever outgrow their room and move).
+    fn empty_cells(cells: usize, points: usize) -> Vec<Vec<(u32, Vector<D>)>> {
+        let room = (2 * points).div_ceil(cells.max(1)).max(1);
+        (0..cells).map(|_| Vec::with_capacity(room)).collect()
     }
 
     fn coords(&self, x: &Vector<D>) -> [u32; D] {
