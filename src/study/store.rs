@@ -1,6 +1,7 @@
 //! Tidy Parquet tables of a study (polars), each written to a temporary file
 //! and renamed, so a reader never sees half a table.
 
+use super::output::RunOutput;
 use super::plan_types::RunSpec;
 use super::record::RunRecord;
 use crate::analysis::summary_types::SummaryRow;
@@ -227,24 +228,15 @@ fn runs_table(runs: &[(RunSpec, RunRecord)]) -> anyhow::Result<DataFrame> {
             .map(|(_, r)| r.output.collisions)
             .collect::<Vec<u64>>(),
     ));
-    columns.push(Column::new(
-        "wall_seconds".into(),
-        runs.iter()
-            .map(|(_, r)| r.output.wall_seconds)
-            .collect::<Vec<f64>>(),
-    ));
-    columns.push(Column::new(
-        "cpu_seconds".into(),
-        runs.iter()
-            .map(|(_, r)| r.output.cpu_seconds)
-            .collect::<Vec<f64>>(),
-    ));
-    columns.push(Column::new(
-        "prepare_seconds".into(),
-        runs.iter()
-            .map(|(_, r)| r.output.prepare_seconds)
-            .collect::<Vec<f64>>(),
-    ));
+    let timings: [(&str, fn(&RunOutput) -> f64); 3] = [
+        ("wall_seconds", |o| o.wall_seconds),
+        ("cpu_seconds", |o| o.cpu_seconds),
+        ("prepare_seconds", |o| o.prepare_seconds),
+    ];
+    for (name, timing) in timings {
+        let values: Vec<f64> = runs.iter().map(|(_, r)| timing(&r.output)).collect();
+        columns.push(Column::new(name.into(), values));
+    }
     columns.push(Column::new(
         "status".into(),
         runs.iter()
