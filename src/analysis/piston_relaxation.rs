@@ -40,6 +40,9 @@ fn fit_line(points: &[(f64, f64, f64)]) -> Option<(f64, f64, f64, f64)> {
     Some((slope, se, intercept, chi2 / dof))
 }
 
+/// omega tau_x below which the exchange theory's relaxation time is compared.
+const SLOW_SWING: f64 = 0.5;
+
 /// The relaxation section of one dimension's points (figure named by the dimension).
 pub fn relaxation(points: &[&Point], dimension: usize, out_dir: &Path) -> anyhow::Result<String> {
     let mut md = String::new();
@@ -121,8 +124,11 @@ pub fn relaxation(points: &[&Point], dimension: usize, out_dir: &Path) -> anyhow
                 num(chi2),
             );
             if dimension > 1 {
+                // Where the exchange is fast next to the swing, as the
+                // theory assumes (it is a small-omega-tau expansion).
                 let ratios: Vec<f64> = relaxed
                     .iter()
+                    .filter(|p| p.stat("omega_tau").mean < SLOW_SWING)
                     .map(|p| {
                         p.stat("relaxation_time").mean / p.stat("relaxation_time_exchange").mean
                     })
@@ -131,7 +137,10 @@ pub fn relaxation(points: &[&Point], dimension: usize, out_dir: &Path) -> anyhow
                 let (lo, hi) = ratios
                     .iter()
                     .fold((f64::INFINITY, 0.0f64), |(a, b), &r| (a.min(r), b.max(r)));
-                let _ = write!(fits, " {}–{} |", num(lo), num(hi));
+                let _ = match ratios.len() {
+                    0 => write!(fits, " — |"),
+                    n => write!(fits, " {}–{} ({n}) |", num(lo), num(hi)),
+                };
             }
             let _ = writeln!(
                 fits,
@@ -180,7 +189,8 @@ pub fn relaxation(points: &[&Point], dimension: usize, out_dir: &Path) -> anyhow
              | group | M from–to | points | exponent b | χ²/dof |{extra} CPU s | collisions |\n\
              |---|---|---|---|---|{rule}---|---|\n{fits}\n",
             if dimension > 1 {
-                ", and the measured time over the exchange theory's at those points (lowest–highest)"
+                ", and the measured time over the exchange theory's at those of them where the disks share \
+                 the compression quickly, ωτ_x < 0.5 (lowest–highest, number of points)"
             } else {
                 ""
             }
@@ -229,7 +239,9 @@ axis). Treating each gas as a relaxing spring (Debye: stiffness k (1 + ½ iωτ_
 oscillator's energy decays in 1/(ω Im k/Re k) ≈ 2/(ω²τ_x) for ωτ_x ≪ 1: a heavier piston is slower, \
 dissipates less per swing, but only in proportion, so τ grows about linearly with M, not as M² as in 1D. The \
 thin lines are this prediction with τ_x = η/p from the Chapman–Enskog viscosity of hard disks (no fitted \
-parameter; its start state, small-amplitude). ";
+parameter; its start state, small-amplitude). It is meant for heavy pistons, ωτ_x ≪ 1; light ones \
+(ωτ_x ≳ 1) lose their energy within a few swings by the routes they have in 1D as well (a compression \
+neither slow nor uniform), far faster than it says. ";
 
 #[cfg(test)]
 mod tests {

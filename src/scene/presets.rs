@@ -49,9 +49,10 @@ piston = { mass = 40.0, position = 0.5, radius = 0.0 }
     Preset {
         name: "disk-piston",
         about: "MacKay's piston in 2D: five light disks (masses 0.9-1.1) left and five heavier (1.5-1.7) \
-                right of a wall of mass 40 that slides along x in a 12 x 12 box with hard walls, the \
-                wall starting with 10 kT. Disks of diameter 0.3 keep each gas dilute (packing fraction \
-                0.5% a side) yet colliding, so it shares energy between x and y",
+                right of a wall of mass 40 that slides along x in a 40 x 40 box with hard walls, the \
+                wall starting with 10 kT. Disks of diameter 1 leave each gas dilute (packing fraction \
+                0.5% with five a side, 2% with twenty) yet colliding, so it can share a compression \
+                between x and y",
         toml: r#"
 dimension = 2
 box = [40.0, 40.0]
