@@ -101,6 +101,16 @@ impl Point {
         self.stats.get(name).copied().unwrap_or(Stats::of(&[]))
     }
 
+    /// "M=100, energy=10, per_side=5" (the mass alone when nothing else is swept).
+    pub fn label(&self) -> String {
+        let mass = format!("M={}", crate::report::format::num(self.mass));
+        if self.group.is_empty() {
+            mass
+        } else {
+            format!("{mass}, {}", self.group)
+        }
+    }
+
     /// Every run reached 1/e of its excess.
     pub fn relaxed(&self) -> bool {
         self.stat("relaxation_time").n as usize == self.runs

@@ -282,10 +282,9 @@ fn table(points: &[&Point], dimension: usize) -> String {
             )
         };
         let mut row = format!(
-            "| {} | M={}, {} | {} | {} |",
+            "| {} | {} | {} | {} |",
             p.id,
-            num(p.mass),
-            p.group,
+            p.label(),
             num(s("mass_over_gas").mean),
             num(s("speed_ratio").mean),
         );
@@ -419,10 +418,9 @@ fn equipartition(points: &[&Point]) -> String {
         let osc = p.stat("oscillator_share");
         let _ = writeln!(
             md,
-            "| {} | M={}, {} | {} | {} | {} | {:+.1} | {} | {:.2} |",
+            "| {} | {} | {} | {} | {} | {:+.1} | {} | {:.2} |",
             p.id,
-            num(p.mass),
-            p.group,
+            p.label(),
             pm(share.mean, share.stderr),
             num(p.equipartition),
             pm(share.mean / p.equipartition, share.stderr / p.equipartition),

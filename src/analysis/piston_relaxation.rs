@@ -204,9 +204,8 @@ pub fn relaxation(points: &[&Point], dimension: usize, out_dir: &Path) -> anyhow
             .map(|p| {
                 let left = p.stat("excess_left");
                 format!(
-                    "at M = {} ({}) the piston still holds {} of its starting excess after {} time units, so τ > {}",
-                    num(p.mass),
-                    p.group,
+                    "at {} the piston still holds {} of its starting excess after {} time units, so τ > {}",
+                    p.label(),
                     pm(left.mean, left.stderr),
                     num(p.duration),
                     num(p.tau_bound())
