@@ -208,12 +208,17 @@ fn every_preset_builds_and_runs() {
                         .map_err(|e| e.to_string())
                 })
                 .map(|mut s| s.run(Stop::Time(10.0))),
-            2 => built::<2>(&text, 7)
-                .and_then(|b| {
+            // A piston wall needs the plane-aware engine.
+            2 => built::<2>(&text, 7).and_then(|b| {
+                if b.particles.iter().any(|p| p.is_plane()) {
+                    Simulation::<2, NeighbourList<2, true>, ()>::new(b.particles, b.sim_box, (), 1)
+                        .map(|mut s| s.run(Stop::Time(10.0)))
+                } else {
                     Simulation::<2, NeighbourList<2>, ()>::new(b.particles, b.sim_box, (), 1)
-                        .map_err(|e| e.to_string())
-                })
-                .map(|mut s| s.run(Stop::Time(10.0))),
+                        .map(|mut s| s.run(Stop::Time(10.0)))
+                }
+                .map_err(|e| e.to_string())
+            }),
             _ => unreachable!(),
         };
         assert!(ok.is_ok(), "{}: {:?}", p.name, ok.err());

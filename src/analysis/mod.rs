@@ -6,8 +6,11 @@
 pub mod piston;
 pub mod piston_estimators;
 mod piston_pictures;
+mod piston_points;
 mod piston_regimes;
+mod piston_relaxation;
 pub mod piston_state;
+mod piston_wall;
 pub mod summary;
 pub mod summary_types;
 

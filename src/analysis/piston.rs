@@ -3,16 +3,17 @@
 //! give its excess energy to the gases; what share it keeps in the end.
 
 use super::ReportSection;
-use super::piston_estimators::{late_mean, late_share, oscillation, relaxation_time};
+use super::piston_estimators::{Oscillation, late_mean, late_share, oscillation, relaxation_time};
 use super::piston_state::{Geometry, Samples};
 use crate::observe::Context;
 use crate::scene::Built;
 use crate::study::descriptor_types::Descriptor;
 use crate::study::output::RunOutput;
 use crate::study::plan_types::RunSpec;
-use crate::theory::piston::Law;
+use crate::theory::piston::{Law, PistonSystem};
 use crate::theory::piston_equilibrium::{degrees_of_freedom, oscillator_share};
 use rand::SeedableRng;
+use std::f64::consts::TAU;
 
 pub use super::piston_state::SERIES;
 
@@ -72,11 +73,13 @@ pub fn per_run<const D: usize>(
 /// Everything measured in one run, by result name.
 pub fn measure(g: &Geometry, s: &Samples, o: &Options) -> Vec<(&'static str, f64)> {
     let start = s.system(g, 0);
-    let omega_ad = start.omega(Law::Adiabatic);
-    let omega_inertia = start.with_gas_inertia().omega(Law::Adiabatic);
-    let omega_iso = start.omega(Law::Isothermal);
     let measured = oscillation(&s.t, &s.x, o.periods, o.band);
-    let frequency = measured.map_or(f64::NAN, |m| m.omega);
+    let frequency = measured.as_ref().map_or(f64::NAN, |m| m.omega);
+    let window = window_states(g, s, measured.as_ref());
+    let predict = |omega: &dyn Fn(&PistonSystem) -> f64| over_window(&window, omega);
+    let omega_ad = predict(&|st| st.omega(Law::Adiabatic));
+    let omega_inertia = predict(&|st| st.with_gas_inertia().omega(Law::Adiabatic));
+    let omega_iso = predict(&|st| st.at_balance().omega(Law::Isothermal));
     let energy = s.oscillator_energy(g);
     let total = s.total[0];
     let (share_eq, _) = oscillator_share(g.dimension, g.particles[0], g.particles[1], DRAWS);
@@ -86,13 +89,14 @@ pub fn measure(g: &Geometry, s: &Samples, o: &Options) -> Vec<(&'static str, f64
     // the gases' thermal speed along x, sqrt(<m v_x^2>/<m>).
     let thermal = (2.0 * (s.left[0] + s.right[0]) / (g.dimension as f64 * gas_mass)).sqrt();
     let peak = (2.0 * energy[0] / g.mass).sqrt();
-    vec![
+    let mut results = vec![
         ("frequency", frequency),
         (
             "frequency_periods",
-            measured.map_or(0.0, |m| m.periods as f64),
+            measured.as_ref().map_or(0.0, |m| m.periods as f64),
         ),
         ("omega_adiabatic", omega_ad),
+        ("omega_adiabatic_start", start.omega(Law::Adiabatic)),
         (
             "omega_adiabatic_small",
             start.small_oscillation_omega(Law::Adiabatic),
@@ -114,6 +118,73 @@ pub fn measure(g: &Geometry, s: &Samples, o: &Options) -> Vec<(&'static str, f64
         ("mass_ratio", g.mass),
         ("mass_over_gas", g.mass / gas_mass),
         ("speed_ratio", peak / thermal),
+    ];
+    if g.dimension > 1 {
+        results.extend(across_x(g, &start, &window, frequency));
+    }
+    results
+}
+
+/// The states the frequency predictions start from: the turning points
+/// within the measured periods (the first sample alone when no period was
+/// measured). The piston gives its energy away as it swings, and a
+/// nonlinear oscillator's frequency follows its amplitude, so the theory is
+/// asked along the measured window. At a turning point the piston is at
+/// rest and so are the gases as a whole: its energy is all potential, the
+/// gases' kinetic energy all heat. (The other laws are asked at the same
+/// oscillation moved to its balance, see `PistonSystem::at_balance`.)
+fn window_states(g: &Geometry, s: &Samples, measured: Option<&Oscillation>) -> Vec<PistonSystem> {
+    match measured {
+        Some(m) => m.turning.iter().map(|&k| s.system(g, k)).collect(),
+        None => vec![s.system(g, 0)],
+    }
+}
+
+/// A predicted frequency over the window: one period over the mean of the
+/// periods it predicts at the window's states (each period of the window
+/// has two turning points), as the measured frequency counts periods over
+/// their total time.
+fn over_window(states: &[PistonSystem], omega: &dyn Fn(&PistonSystem) -> f64) -> f64 {
+    let periods: f64 = states.iter().map(|st| TAU / omega(st)).sum();
+    TAU * states.len() as f64 / periods
+}
+
+/// What only a gas with axes across x has: the collisionless prediction
+/// (gamma = 3), and the gases as relaxing media (see
+/// `theory::piston_exchange`): their exchange time at the start
+/// (stiffness-weighted over the sides), omega tau, the frequency with the
+/// gases' inertia and their lag, the relaxation time the lag predicts; and
+/// how far from ideal the gases are (excluded over free length, ~ B2 rho).
+fn across_x(
+    g: &Geometry,
+    start: &PistonSystem,
+    window: &[PistonSystem],
+    frequency: f64,
+) -> Vec<(&'static str, f64)> {
+    let relaxing = g.relaxing(start);
+    let [(kl, tl), (kr, tr)] = relaxing.sides;
+    let tau = (kl * tl + kr * tr) / (kl + kr);
+    let omega_free = over_window(window, &|st| st.at_balance().omega(Law::Collisionless));
+    let omega_exchange = over_window(window, &|st| {
+        g.relaxing(st)
+            .frequency(st.with_gas_inertia().omega(Law::Adiabatic))
+    });
+    let excluded = [start.left, start.right]
+        .iter()
+        .map(|gas| gas.reach / gas.length() - 1.0)
+        .fold(0.0, f64::max);
+    vec![
+        ("omega_collisionless", omega_free),
+        ("frequency_ratio_collisionless", frequency / omega_free),
+        ("exchange_time", tau),
+        ("omega_tau", start.omega(Law::Adiabatic) * tau),
+        ("omega_exchange", omega_exchange),
+        ("frequency_ratio_exchange", frequency / omega_exchange),
+        (
+            "relaxation_time_exchange",
+            relaxing.decay_time(relaxing.frequency(start.omega(Law::Adiabatic))),
+        ),
+        ("excluded_fraction", excluded),
     ]
 }
 
@@ -123,29 +194,59 @@ pub fn measure(g: &Geometry, s: &Samples, o: &Options) -> Vec<(&'static str, f64
 pub fn theory(d: &Descriptor, result: &str) -> Option<f64> {
     let scene = crate::scene::resolve(&d.scene).ok()?;
     match result {
-        "frequency_ratio" | "frequency_ratio_inertia" => Some(1.0),
-        "piston_share" | "oscillator_share" if scene.dimension.unwrap_or(1) == 1 => {
-            // Counts per side do not depend on the random draws.
-            let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0);
-            let g = Geometry::of(&crate::scene::build::<1>(&scene, &mut rng).ok()?)?;
+        "frequency_ratio" | "frequency_ratio_inertia" | "frequency_ratio_exchange" => Some(1.0),
+        "piston_share" | "oscillator_share" => {
+            let (d, [left, right]) = gas_counts(&scene)?;
             Some(if result == "piston_share" {
-                1.0 / degrees_of_freedom(1, g.particles[0] + g.particles[1]) as f64
+                1.0 / degrees_of_freedom(d, left + right) as f64
             } else {
-                oscillator_share(1, g.particles[0], g.particles[1], DRAWS).0
+                oscillator_share(d, left, right, DRAWS).0
             })
         }
         _ => None,
     }
 }
 
-/// MacKay's pictures and answer for his own case, where the theory holds,
-/// how the piston relaxes, and how each number was measured.
+/// The dimension and the gas particles on each side of a scene's piston.
+/// Counts per side do not depend on the random draws.
+fn gas_counts(scene: &crate::scene::spec::SceneSpec) -> Option<(usize, [usize; 2])> {
+    fn counts<const D: usize>(scene: &crate::scene::spec::SceneSpec) -> Option<[usize; 2]> {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0);
+        Some(Geometry::of(&crate::scene::build::<D>(scene, &mut rng).ok()?)?.particles)
+    }
+    let d = scene.dimension().ok()?;
+    let n = match d {
+        1 => counts::<1>(scene),
+        2 => counts::<2>(scene),
+        3 => counts::<3>(scene),
+        _ => None,
+    }?;
+    Some((d, n))
+}
+
+/// MacKay's pictures and answer (if the sweep has rods), the 2D wall's (if
+/// it has disks), where the theory holds, how the piston relaxes, and how
+/// each number was measured.
 pub fn section(
     d: &Descriptor,
     runs: &[(RunSpec, RunOutput)],
     out_dir: &std::path::Path,
 ) -> anyhow::Result<ReportSection> {
-    let mut md = super::piston_pictures::mackay_case(d, out_dir)?;
+    let dimensions: std::collections::BTreeSet<usize> = runs
+        .iter()
+        .filter_map(|(spec, _)| {
+            crate::scene::resolve(&spec.descriptor.scene)
+                .ok()?
+                .dimension
+        })
+        .collect();
+    let mut md = String::new();
+    if dimensions.contains(&1) {
+        md.push_str(&super::piston_pictures::mackay_case(d, out_dir)?);
+    }
+    if dimensions.contains(&2) {
+        md.push_str(&super::piston_wall::wall_cases(d, out_dir)?);
+    }
     md.push_str(&super::piston_regimes::regimes(runs, out_dir)?);
     md.push_str(METHODS);
     Ok(ReportSection {
@@ -156,14 +257,33 @@ pub fn section(
 }
 
 const METHODS: &str = "\n### How each number is measured\n\n\
-**Theory** starts from each run's first sample (after any `[run] equilibrate`): the piston's position \
-and kinetic energy and each gas's kinetic energy and free volume (its side's volume minus what its particles \
-occupy: L − Nσ in 1D, Tonks). `omega_adiabatic` is the frequency of the full nonlinear oscillator in which each \
-gas keeps P V^γ fixed, γ = (d+2)/d (3 in 1D), with the piston's actual energy (period by quadrature between the \
-turning points); `omega_adiabatic_small` is its harmonic limit ω² = γP(1/X_L + 1/X_R)/M at the pressure \
-balance; `omega_adiabatic_inertia` adds a third of the gases' mass to the piston's (a uniformly compressed gas \
-moves with a velocity rising linearly from wall to piston: Rayleigh's correction for a spring's own mass); \
-`omega_isothermal` is the nonlinear oscillator with γ = 1, for contrast.\n\n\
+**Theory** works per unit area of the piston's face. Each gas is an ideal gas in its free volume; divided by \
+the face area its centres reach, that is a free length l, and the gas pushes the piston with \
+F = (2/d)(K/l)·dl/da, K its kinetic energy and a its reach along x (wall to piston, less a radius at each end: \
+the layer a disk's centre cannot enter). The free length is the reach less what the particles exclude each \
+other from: in 1D exactly L − Σσ (Tonks); in 2D the free volume Q^(1/N) from the configurational integral \
+to first order in pair overlaps in the box, l = a − c₀ + c₁/a, whose bulk term is the second virial \
+coefficient πσ²/2 per pair and particle and whose edge term counts the exclusion the walls cut off. It \
+leaves out terms of order (B₂ρ)², 0.2(B₂ρ)² in the pressure for disks: 0.04% at the sweep's densest \
+(`excluded_fraction`, about B₂ρ, is 4% with 20 disks a side). A polytrope K l^(γ−1) = const gives the piston a potential: \
+adiabatic γ = (d+2)/d (3 in 1D, 2 in 2D), isothermal γ = 1, collisionless γ = 3 (a gas whose particles \
+never collide compresses only its x-motion). `omega_adiabatic` is the frequency of the full nonlinear \
+adiabatic oscillator (period by quadrature between the turning points), asked at every turning point of the \
+measured periods and averaged period by period: the piston loses energy as it swings, and a nonlinear \
+oscillator's frequency follows its amplitude; at a turning point the piston and the gases as a whole are at \
+rest, so the oscillator energy is all potential and the gases' kinetic energy all heat \
+(`omega_adiabatic_start` is the prediction from the first sample alone, `omega_adiabatic_small` its harmonic \
+limit ω² = γP(1/X_L + 1/X_R)/M). `omega_adiabatic_inertia` adds a third of the gases' mass to the piston's \
+(a uniformly compressed gas moves with a velocity rising linearly from wall to piston: Rayleigh's correction \
+for a spring's own mass, which holds for the gas's x-motion in any dimension; the flow's energy belongs to \
+the oscillator, not to the gas's heat). `omega_isothermal` and, in 2D, `omega_collisionless` are those laws \
+asked at the same oscillation moved along its adiabat to the balance, where neither gas is hot or cold from \
+the swing. In 2D the gases are also relaxing media: a compression along x heats x first and collisions \
+share it with y in τ_x = η/p (Chapman–Enskog viscosity of hard disks, Henderson's contact value; \
+`exchange_time`, stiffness-weighted over the sides, and `omega_tau` = ω τ_x); with each gas's stiffness \
+k(1 + ½ iωτ_x/(1 + iωτ_x)) the oscillator is stiffer and loses energy every swing: `omega_exchange` is the \
+frequency with the gases' inertia and this lag, `relaxation_time_exchange` the time in which it loses energy \
+by e (from the start, small-amplitude).\n\n\
 **Frequency** (`frequency`): from the first `window_periods` (default 4) full periods of the piston's position. \
 Turning points are found with a hysteresis band of 10% of the position's range (`band`), so jitter makes no \
 extra turning points and counting stops once the oscillation has decayed into the band; between consecutive \
@@ -176,7 +296,7 @@ with no full period above the band gives no frequency and is counted in n.\n\n\
 adiabatic potential through each gas's current state, so energy already handed to the gases as heat does not \
 count and the kinetic–potential swing of the oscillation cancels. At equilibrium E_osc averages \
 `oscillator_share` × K, computed by sampling the microcanonical ensemble (velocities uniform on the energy \
-sphere, piston position from the gases' configurational weight V_L^N_L V_R^N_R). The relaxation time is when \
+sphere, piston position from the gases' configurational weight l_L^N_L l_R^N_R). The relaxation time is when \
 the excess E_osc − E_eq first falls to 1/e of its start, interpolated between samples. The decay is not one \
 exponential (fast while the motion is far from adiabatic, ever slower as it becomes adiabatic, and near \
 equilibrium E_osc wanders for long times), so an exponential fitted to the whole record would follow the late \
@@ -185,5 +305,6 @@ reach it report none; `excess_left` (the fraction of the starting excess left ov
 then gives the lower bound τ > T / −ln(excess_left), valid for a decay that does not speed up.\n\n\
 **Long-time shares**: `piston_share` is the piston's mean share of the kinetic energy over the last half of \
 the run (`late_fraction`), against equipartition 1/N_free with N_free = d N_gas + 1 (the piston moves along x \
-only: 2N_side + 1 in 1D); `oscillator_share` likewise for E_osc. They test equipartition only where the piston \
-has relaxed (τ well below half the run); elsewhere a large z measures how far from equilibrium it still is.\n";
+only: 2N_side + 1 in 1D, 2N_gas + 1 for a wall in 2D); `oscillator_share` likewise for E_osc. They test \
+equipartition only where the piston has relaxed (τ well below half the run); elsewhere a large z measures how \
+far from equilibrium it still is.\n";

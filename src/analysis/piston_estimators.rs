@@ -4,12 +4,14 @@
 
 use std::f64::consts::TAU;
 
-/// The early oscillation: its angular frequency and how many full periods
-/// measured it.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// The early oscillation: its angular frequency, how many full periods
+/// measured it, and the samples at the turning points within them (two per
+/// period).
+#[derive(Debug, Clone, PartialEq)]
 pub struct Oscillation {
     pub omega: f64,
     pub periods: usize,
+    pub turning: Vec<usize>,
 }
 
 /// Angular frequency of the first `periods` full oscillations of x(t).
@@ -53,6 +55,9 @@ pub fn oscillation(
     Some(Oscillation {
         omega: TAU * full as f64 / (crossings[2 * full] - crossings[0]),
         periods: full,
+        // Crossings 0 and 2 full bound the periods; between them lie
+        // turning points 1 to 2 full.
+        turning: turning[1..=2 * full].to_vec(),
     })
 }
 
@@ -262,6 +267,12 @@ mod tests {
             (got.omega / omega - 1.0).abs() < bound,
             "{got:?}, bound {bound}"
         );
+        // The turning points inside the window, half a period apart (to a sample).
+        assert_eq!(got.turning.len(), 8);
+        for w in got.turning.windows(2) {
+            let half = t[w[1]] - t[w[0]];
+            assert!((half - 0.5 * TAU / omega).abs() <= dt, "{got:?}");
+        }
     }
 
     /// Strong damping (amplitude down by e every period) and noise of 2% of
@@ -293,6 +304,7 @@ mod tests {
         // time units, i.e. 0.2 / (2 periods * 2 pi) ~ 1.6% of omega.
         assert!(sd < 0.03, "spread {sd}");
         assert!(draws.iter().all(|d| d.periods >= 1 && d.periods <= 4));
+        assert!(draws.iter().all(|d| d.turning.len() == 2 * d.periods));
     }
 
     /// The old estimator's failure: the mean of a strongly damped record is

@@ -22,19 +22,19 @@ use std::path::Path;
 
 const BLUE: (u8, u8, u8) = (31, 119, 180);
 const GREEN: (u8, u8, u8) = (44, 160, 44);
-const PURPLE: (u8, u8, u8) = (128, 0, 128);
-const BLACK: (u8, u8, u8) = (0, 0, 0);
-const GREY: (u8, u8, u8) = (150, 150, 150);
+pub(super) const PURPLE: (u8, u8, u8) = (128, 0, 128);
+pub(super) const BLACK: (u8, u8, u8) = (0, 0, 0);
+pub(super) const GREY: (u8, u8, u8) = (150, 150, 150);
 
 /// A predicted piston path (t, x), its colour and its legend.
-type PredictedPath = (Vec<(f64, f64)>, (u8, u8, u8), &'static str);
+pub(super) type PredictedPath = (Vec<(f64, f64)>, (u8, u8, u8), &'static str);
 
 /// Replicas of MacKay's case (they differ in the masses drawn from his ranges).
 const REPLICAS: u32 = 16;
 const DURATION: f64 = 200.0;
 const SAMPLE_EVERY: f64 = 0.05;
 
-fn colour(species: &str) -> (u8, u8, u8) {
+pub(super) fn colour(species: &str) -> (u8, u8, u8) {
     match species {
         "light" => BLUE,
         "heavy" => GREEN,
@@ -134,12 +134,18 @@ pub fn mackay_case(d: &Descriptor, out_dir: &Path) -> anyhow::Result<String> {
     let (share_eq, _) = oscillator_share(1, geometry.particles[0], geometry.particles[1], DRAWS);
     let energy = samples.oscillator_energy(&geometry);
     for horizon in [40.0, 200.0] {
-        let name = energies(
-            first,
-            &samples.t,
-            &energy,
-            share_eq * total,
+        let name = format!("mackay_energy_{horizon}.svg");
+        let oscillator = Oscillator {
+            t: &samples.t,
+            energy: &energy,
+            equilibrium: share_eq * total,
+        };
+        energies(
+            &first.out,
+            &oscillator,
             horizon,
+            &format!("Kinetic energy of each gas and of the piston, first {horizon} time units"),
+            &name,
             out_dir,
         )?;
         let _ = writeln!(
@@ -176,7 +182,7 @@ pub fn mackay_case(d: &Descriptor, out_dir: &Path) -> anyhow::Result<String> {
          If each gas is compressed adiabatically (P X^3 fixed in 1D), the piston moves in the potential of the \
          two gases, and with this much energy its swing is large, so the oscillation is far from harmonic:\n\n\
          | prediction | ω | period |\n|---|---|---|\n\
-         | adiabatic, nonlinear, with the piston's actual energy | {ad} | {pad} |\n\
+         | adiabatic, nonlinear, at the amplitude of each measured period | {ad} | {pad} |\n\
          | adiabatic, nonlinear, gases' inertia added (M + M_gas/3) | {inr} | {pinr} |\n\
          | adiabatic, small oscillations, ω² = γP(1/X_L + 1/X_R)/M | {sm} | {psm} |\n\
          | isothermal (γ = 1), nonlinear | {iso} | {piso} |\n\
@@ -303,18 +309,26 @@ fn spacetime(
     Ok(name)
 }
 
-/// Kinetic energy of each gas and the piston, with the oscillator energy; returns the file name.
-fn energies(
-    first: &Replica,
-    t: &[f64],
-    oscillator: &[f64],
-    equilibrium: f64,
+/// The piston's oscillator energy over time and the level it relaxes to.
+pub(super) struct Oscillator<'a> {
+    pub t: &'a [f64],
+    pub energy: &'a [f64],
+    pub equilibrium: f64,
+}
+
+/// Kinetic energy of each gas and the piston, with the oscillator energy
+/// and its equilibrium level, up to `horizon`; written as `name`.
+pub(super) fn energies(
+    out: &RunOutput,
+    osc: &Oscillator,
     horizon: f64,
+    title: &str,
+    name: &str,
     out_dir: &Path,
-) -> anyhow::Result<String> {
+) -> anyhow::Result<()> {
+    let (t, oscillator, equilibrium) = (osc.t, osc.energy, osc.equilibrium);
     let within = |t: f64| t <= horizon;
-    let mut layers: Vec<Layer> = first
-        .out
+    let mut layers: Vec<Layer> = out
         .series
         .iter()
         .filter_map(|s| {
@@ -353,14 +367,13 @@ fn energies(
         dashed: true,
         label: Some("its equilibrium mean".into()),
     });
-    let name = format!("mackay_energy_{horizon}.svg");
     let chart = ChartSpec {
-        title: format!("Kinetic energy of each gas and of the piston, first {horizon} time units"),
+        title: title.to_string(),
         x_label: "time t".into(),
         y_label: "kinetic energy".into(),
         layers,
         ..Default::default()
     };
-    crate::study::store::write_atomic(&out_dir.join(&name), render(&chart).as_bytes())?;
-    Ok(name)
+    crate::study::store::write_atomic(&out_dir.join(name), render(&chart).as_bytes())?;
+    Ok(())
 }

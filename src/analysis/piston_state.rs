@@ -1,27 +1,29 @@
 //! The piston's state as the theory sees it: the fixed geometry of a scene
-//! (masses, the volume the particles occupy on each side) and, per sample,
-//! the piston's position and energy and each gas's energy.
+//! (masses, the room each gas has) and, per sample, the piston's position
+//! and energy and each gas's energy.
 
 use crate::engine::Particle;
 use crate::scene::Built;
 use crate::study::output::{RunOutput, Series};
 use crate::theory::piston::{Gas, Law, PistonSystem};
+use crate::theory::piston_exchange::{Relaxing, exchange_time};
+use crate::theory::piston_room::Room;
 
 /// What does not change during a run.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Geometry {
     pub dimension: usize,
     pub mass: f64,
-    /// Area of the piston's face (1 in 1D).
-    pub area: f64,
     /// Box length along x and the piston's half thickness.
     pub length: f64,
     pub half_thickness: f64,
-    /// Per side (left, right): volume the particles themselves take up
-    /// (Tonks: N sigma in 1D), their total mass and their number.
-    pub occupied: [f64; 2],
+    /// Per side (left, right): the room its gas has (reach, face, excluded
+    /// length), its total mass, its number of particles and the volume they
+    /// take up (for the packing fraction).
+    pub rooms: [Room; 2],
     pub gas_mass: [f64; 2],
     pub particles: [usize; 2],
+    pub occupied: [f64; 2],
 }
 
 impl Geometry {
@@ -30,26 +32,28 @@ impl Geometry {
     pub fn of<const D: usize>(built: &Built<D>) -> Option<Geometry> {
         let p = built.piston?;
         let piston = &built.particles[p];
-        let mut geometry = Geometry {
-            dimension: D,
-            mass: piston.mass(),
-            area: built.sim_box.size[1..].iter().product(),
-            length: built.sim_box.size[0],
-            half_thickness: piston.radius,
-            occupied: [0.0; 2],
-            gas_mass: [0.0; 2],
-            particles: [0; 2],
-        };
+        let mut radii: [Vec<f64>; 2] = [Vec::new(), Vec::new()];
+        let (mut gas_mass, mut occupied) = ([0.0; 2], [0.0; 2]);
         for (i, q) in built.particles.iter().enumerate() {
             if i == p || q.is_immovable() {
                 continue;
             }
             let side = usize::from(q.pos[0] > piston.pos[0]);
-            geometry.occupied[side] += volume::<D>(q);
-            geometry.gas_mass[side] += q.mass();
-            geometry.particles[side] += 1;
+            radii[side].push(q.radius);
+            gas_mass[side] += q.mass();
+            occupied[side] += volume::<D>(q);
         }
-        Some(geometry)
+        let across = &built.sim_box.size[1..];
+        Some(Geometry {
+            dimension: D,
+            mass: piston.mass(),
+            length: built.sim_box.size[0],
+            half_thickness: piston.radius,
+            rooms: [Room::of(&radii[0], across), Room::of(&radii[1], across)],
+            gas_mass,
+            particles: [radii[0].len(), radii[1].len()],
+            occupied,
+        })
     }
 
     /// Free kinetic degrees of freedom: d per gas particle, and one for the
@@ -59,35 +63,73 @@ impl Geometry {
         (self.dimension * (self.particles[0] + self.particles[1]) + 1) as f64
     }
 
-    /// Free volumes (left, right) with the piston at x.
-    pub fn free_volumes(&self, x: f64) -> (f64, f64) {
-        (
-            self.area * (x - self.half_thickness) - self.occupied[0],
-            self.area * (self.length - x - self.half_thickness) - self.occupied[1],
-        )
+    /// Reaches (left, right) with the piston at x: the length along x each
+    /// gas's centres can reach, a radius short of the wall and of the piston.
+    pub fn reaches(&self, x: f64) -> [f64; 2] {
+        let h = self.half_thickness;
+        [
+            x - h - 2.0 * self.rooms[0].radius,
+            self.length - x - h - 2.0 * self.rooms[1].radius,
+        ]
+    }
+
+    /// Packing fraction of each side with the piston at x: the particles'
+    /// volume over the region their centres reach.
+    pub fn packing(&self, x: f64) -> [f64; 2] {
+        let a = self.reaches(x);
+        [0, 1].map(|s| self.occupied[s] / (a[s] * self.rooms[s].face))
     }
 
     /// The theory's view of one state: piston at x with kinetic energy
     /// `piston` (moving in the direction of `sign`), gases with energies
     /// `left` and `right`.
     pub fn system(&self, x: f64, piston: f64, left: f64, right: f64, sign: f64) -> PistonSystem {
-        let (vl, vr) = self.free_volumes(x);
+        let a = self.reaches(x);
+        let gas = |s: usize, energy: f64| Gas {
+            energy,
+            mass: self.gas_mass[s],
+            reach: a[s],
+            excluded: self.rooms[s].excluded,
+            edge: self.rooms[s].edge,
+        };
         PistonSystem {
             dimension: self.dimension,
             mass: self.mass,
-            area: self.area,
             x0: x,
             v0: sign.signum() * (2.0 * piston.max(0.0) / self.mass).sqrt(),
-            left: Gas {
-                energy: left,
-                free_volume: vl,
-                mass: self.gas_mass[0],
-            },
-            right: Gas {
-                energy: right,
-                free_volume: vr,
-                mass: self.gas_mass[1],
-            },
+            left: gas(0, left),
+            right: gas(1, right),
+        }
+    }
+
+    /// The gases of `system` (a state of this geometry) as relaxing springs:
+    /// each side's adiabatic stiffness at the balance and the time its
+    /// kinetic energy takes to share a compression along x with the other
+    /// axes (at the balance, with the side's mean mass and temperature).
+    pub fn relaxing(&self, system: &PistonSystem) -> Relaxing {
+        let centre = system.balance(Law::Adiabatic);
+        let (kl, kr) = system.stiffnesses(Law::Adiabatic);
+        let a = self.reaches(centre);
+        let phi = self.packing(centre);
+        let d = self.dimension as f64;
+        let gases = [system.left, system.right];
+        let (ll, lr) = system.lengths(centre);
+        let tau = |s: usize| {
+            let n = self.particles[s] as f64;
+            // At the balance, on the adiabat (K l^(2/d) fixed).
+            let energy = gases[s].energy * (gases[s].length() / [ll, lr][s]).powf(2.0 / d);
+            exchange_time(
+                self.dimension,
+                n / (a[s] * self.rooms[s].face),
+                2.0 * self.rooms[s].radius,
+                self.gas_mass[s] / n,
+                2.0 * energy / (d * n),
+                phi[s],
+            )
+        };
+        Relaxing {
+            dimension: self.dimension,
+            sides: [(kl, tau(0)), (kr, tau(1))],
         }
     }
 }

@@ -47,6 +47,26 @@ piston = { mass = 40.0, position = 0.5, radius = 0.0 }
 "#,
     },
     Preset {
+        name: "disk-piston",
+        about: "MacKay's piston in 2D: five light disks (masses 0.9-1.1) left and five heavier (1.5-1.7) \
+                right of a wall of mass 40 that slides along x in a 40 x 40 box with hard walls, the \
+                wall starting with 10 kT. Disks of diameter 1 leave each gas dilute (packing fraction \
+                0.5% with five a side, 2% with twenty) yet colliding, so it can share a compression \
+                between x and y",
+        toml: r#"
+dimension = 2
+box = [40.0, 40.0]
+boundary = ["walls", "walls"]
+species = [
+  { name = "light", count = 5, mass = [0.9, 1.1], radius = 0.5, region = { from = [0.0, 0.0], to = [0.5, 1.0] } },
+  { name = "heavy", count = 5, mass = [1.5, 1.7], radius = 0.5, region = { from = [0.5, 0.0], to = [1.0, 1.0] } },
+]
+placement = { kind = "random" }
+velocities = { kind = "maxwell", temperature = 1.0 }
+piston = { mass = 40.0, position = 0.5, radius = 0.0, energy = 10.0 }
+"#,
+    },
+    Preset {
         name: "mackay-cradle",
         about: "MacKay (cradle2.m): walls at 0 and 35, eight point rods at 14, 15, ..., 21 with masses \
                 4.123, 9.0123 and six 1s; all the energy in the left two, moving left at speed 2",

@@ -2,6 +2,8 @@
 
 pub mod piston;
 pub mod piston_equilibrium;
+pub mod piston_exchange;
+pub mod piston_room;
 
 use crate::study::descriptor_types::Descriptor;
 

@@ -1,24 +1,100 @@
 //! The piston as an oscillator driven by the pressure difference of the two
-//! gases (MacKay's question). Each gas is an ideal gas of d-dimensional
-//! particles in its free volume V (the volume its particles' centres can
-//! reach: in 1D the side's length minus the rods' lengths, Tonks):
-//! P V = (2/d) K. A polytrope P V^gamma = const gives the piston a potential
-//! energy; adiabatic compression has gamma = (d + 2)/d (K V^(2/d) fixed),
-//! isothermal gamma = 1 (K fixed), for contrast.
+//! gases (MacKay's question), per unit area of the piston's face.
+//!
+//! Each gas is an ideal gas in its free volume: P V = (2/d) K. Dividing by
+//! the face area its centres reach turns volumes into lengths: a gas with
+//! kinetic energy K and free length l pushes the piston with
+//! F = (2/d) (K / l) dl/da, where a is the length along x its centres can
+//! reach (wall to piston, less a radius at each end), and the face area
+//! drops out. The free length is l(a) = a - excluded + edge / a: the reach
+//! less what the other particles exclude (exact in 1D, Tonks; in 2D and 3D
+//! the second virial term in the box, see `analysis::piston_state`). A
+//! polytrope K l^(gamma - 1) = const gives the piston a potential energy:
+//! adiabatic gamma = (d + 2)/d (K l^(2/d) fixed), isothermal gamma = 1 (K
+//! fixed), and collisionless gamma = 3 (in d > 1, a gas whose particles
+//! never collide heats only its x-motion, as a 1D gas does).
 
-/// One gas: its kinetic energy and free volume in the state described.
+/// One gas in the state described.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Gas {
     pub energy: f64,
-    pub free_volume: f64,
     /// Total mass of the gas's particles (its inertia, see `with_gas_inertia`).
     pub mass: f64,
+    /// Length along x its particles' centres can reach.
+    pub reach: f64,
+    /// Free length l(a) = a - excluded + edge / a (see `free_length`).
+    pub excluded: f64,
+    pub edge: f64,
 }
 
 impl Gas {
+    /// Point particles (nothing excluded) with free length `length`.
+    pub fn ideal(energy: f64, mass: f64, length: f64) -> Gas {
+        Gas {
+            energy,
+            mass,
+            reach: length,
+            excluded: 0.0,
+            edge: 0.0,
+        }
+    }
+
+    /// Free length (free volume over the face area) at reach a.
+    pub fn free_length(&self, a: f64) -> f64 {
+        a - self.excluded + self.edge / a
+    }
+
+    /// The free length in the state described.
+    pub fn length(&self) -> f64 {
+        self.free_length(self.reach)
+    }
+
     /// P V = (2/d) K.
     fn pv(&self, dimension: usize) -> f64 {
         2.0 * self.energy / dimension as f64
+    }
+
+    /// Smallest reach the theory squeezes the gas into: where its free
+    /// length vanishes (ideal gases, 1D), or, with an edge term, where that
+    /// term stops being a small correction: from a = excluded + 3 sqrt(edge)
+    /// on, l > 0 and the push falls monotonically with the reach. Far below
+    /// any reach a piston with a few kT of energy gets to.
+    fn min_reach(&self) -> f64 {
+        self.excluded + 3.0 * self.edge.max(0.0).sqrt()
+    }
+
+    /// Pressure times face area (force per unit face) at reach a; infinite
+    /// where the gas has no room.
+    fn push(&self, law: Law, dimension: usize, a: f64) -> f64 {
+        let (l0, l) = (self.length(), self.free_length(a));
+        if a <= self.min_reach() || l <= 0.0 {
+            return f64::INFINITY;
+        }
+        let g = law.gamma(dimension);
+        self.pv(dimension) / l0 * (l0 / l).powf(g) * (1.0 - self.edge / (a * a))
+    }
+
+    /// The gas's energy at reach a along the law (the piston's potential).
+    fn energy_at(&self, law: Law, dimension: usize, a: f64) -> f64 {
+        let (l0, l) = (self.length(), self.free_length(a));
+        if a <= self.min_reach() || l <= 0.0 {
+            return f64::INFINITY;
+        }
+        let g = law.gamma(dimension);
+        let pv = self.pv(dimension);
+        if g == 1.0 {
+            -pv * l.ln()
+        } else {
+            pv / (g - 1.0) * (l0 / l).powf(g - 1.0)
+        }
+    }
+
+    /// -d push/da: how much harder the gas pushes when squeezed.
+    fn stiffness(&self, law: Law, dimension: usize, a: f64) -> f64 {
+        let l = self.free_length(a);
+        let slope = 1.0 - self.edge / (a * a);
+        let p = self.push(law, dimension, a) / slope;
+        p * (law.gamma(dimension) * slope * slope / l - 2.0 * self.edge / (a * a * a))
     }
 }
 
@@ -27,9 +103,6 @@ impl Gas {
 pub struct PistonSystem {
     pub dimension: usize,
     pub mass: f64,
-    /// Area of the piston's face (1 in 1D): a step dx changes the free
-    /// volumes by -+ area dx.
-    pub area: f64,
     pub x0: f64,
     pub v0: f64,
     pub left: Gas,
@@ -40,71 +113,80 @@ pub struct PistonSystem {
 pub enum Law {
     Adiabatic,
     Isothermal,
+    Collisionless,
 }
 
 impl Law {
-    /// gamma = (d + 2)/d for an adiabatic ideal gas in d dimensions, 1 isothermal.
+    /// gamma = (d + 2)/d for an adiabatic ideal gas in d dimensions, 1
+    /// isothermal, 3 collisionless (only the x-motion is compressed).
     pub fn gamma(self, dimension: usize) -> f64 {
         match self {
             Law::Adiabatic => (dimension as f64 + 2.0) / dimension as f64,
             Law::Isothermal => 1.0,
+            Law::Collisionless => 3.0,
         }
     }
 }
 
 impl PistonSystem {
-    /// Free volumes with the piston at x.
-    pub fn volumes(&self, x: f64) -> (f64, f64) {
-        let dv = self.area * (x - self.x0);
-        (self.left.free_volume + dv, self.right.free_volume - dv)
+    /// Reaches (left, right) with the piston at x.
+    pub fn reaches(&self, x: f64) -> (f64, f64) {
+        let dx = x - self.x0;
+        (self.left.reach + dx, self.right.reach - dx)
     }
 
-    /// Pressures (left, right) with the piston at x.
-    pub fn pressures(&self, law: Law, x: f64) -> (f64, f64) {
-        let g = law.gamma(self.dimension);
-        let (vl, vr) = self.volumes(x);
-        let p = |gas: &Gas, v: f64| {
-            gas.pv(self.dimension) / gas.free_volume * (gas.free_volume / v).powf(g)
-        };
-        (p(&self.left, vl), p(&self.right, vr))
+    /// Free lengths (left, right) with the piston at x.
+    pub fn lengths(&self, x: f64) -> (f64, f64) {
+        let (al, ar) = self.reaches(x);
+        (self.left.free_length(al), self.right.free_length(ar))
     }
 
     /// The gases' energy as a function of piston position (the piston's
     /// potential); infinite where a gas would have no room.
     pub fn potential(&self, law: Law, x: f64) -> f64 {
-        let (vl, vr) = self.volumes(x);
-        if vl <= 0.0 || vr <= 0.0 {
-            return f64::INFINITY;
-        }
-        let g = law.gamma(self.dimension);
-        let u = |gas: &Gas, v: f64| {
-            let pv = gas.pv(self.dimension);
-            if g == 1.0 {
-                -pv * v.ln()
-            } else {
-                pv / (g - 1.0) * (gas.free_volume / v).powf(g - 1.0)
-            }
-        };
-        u(&self.left, vl) + u(&self.right, vr)
+        let (al, ar) = self.reaches(x);
+        self.left.energy_at(law, self.dimension, al) + self.right.energy_at(law, self.dimension, ar)
     }
 
-    /// Net force on the piston at x: (P_left - P_right) area.
+    /// Net force on the piston at x (per unit face area, as everything here).
     pub fn force(&self, law: Law, x: f64) -> f64 {
-        let (pl, pr) = self.pressures(law, x);
-        (pl - pr) * self.area
+        let (al, ar) = self.reaches(x);
+        self.left.push(law, self.dimension, al) - self.right.push(law, self.dimension, ar)
     }
 
-    /// Where the pressures balance. With P V^gamma fixed on each side and the
-    /// total free volume fixed, V_L/V_R = (V_L0/V_R0) (P_L0/P_R0)^(1/gamma).
+    /// Where the pressures balance. Without edge terms the free lengths
+    /// move with x one for one and P l^gamma is fixed on each side, so
+    /// l_L/l_R = (l_L0/l_R0) (P_L0/P_R0)^(1/gamma) in closed form; the edge
+    /// terms' small shift follows by Newton's method on the force (whose
+    /// slope is the stiffness), or by bisection should that stray.
     pub fn balance(&self, law: Law) -> f64 {
         let g = law.gamma(self.dimension);
         let (l, r) = (&self.left, &self.right);
-        let ratio = (l.free_volume / r.free_volume)
-            * (l.pv(self.dimension) / l.free_volume / (r.pv(self.dimension) / r.free_volume))
-                .powf(1.0 / g);
-        let total = l.free_volume + r.free_volume;
-        let vl = total * ratio / (1.0 + ratio);
-        self.x0 + (vl - l.free_volume) / self.area
+        let (ll, lr) = (l.length(), r.length());
+        let pressure = |gas: &Gas, length: f64| gas.pv(self.dimension) / length;
+        let ratio = ll / lr * (pressure(l, ll) / pressure(r, lr)).powf(1.0 / g);
+        let mut x = self.x0 + (ll + lr) * ratio / (1.0 + ratio) - ll;
+        if l.edge == 0.0 && r.edge == 0.0 {
+            return x;
+        }
+        let (lo, hi) = self.limits();
+        for _ in 0..50 {
+            let next = x + self.force(law, x) / self.stiffness_at(law, x);
+            if !(next > lo && next < hi) {
+                return bisect(|x| self.force(law, x), lo, hi);
+            }
+            if (next - x).abs() <= 1e-14 * x.abs().max(1.0) {
+                return next;
+            }
+            x = next;
+        }
+        bisect(|x| self.force(law, x), lo, hi)
+    }
+
+    /// -dF/dx with the piston at x.
+    fn stiffness_at(&self, law: Law, x: f64) -> f64 {
+        let (al, ar) = self.reaches(x);
+        self.left.stiffness(law, self.dimension, al) + self.right.stiffness(law, self.dimension, ar)
     }
 
     /// Energy of the oscillation: the piston's kinetic energy plus the
@@ -114,14 +196,44 @@ impl PistonSystem {
             - self.potential(law, self.balance(law))
     }
 
+    /// The same adiabatic oscillation where it passes the balance: the
+    /// piston there with all the oscillator energy as kinetic energy, each
+    /// gas moved along its adiabat (K l^(2/d) fixed). The neutral state to
+    /// ask another law from: at a turning point one gas is hot and the other
+    /// cold only because the swing compressed them.
+    pub fn at_balance(&self) -> PistonSystem {
+        let x = self.balance(Law::Adiabatic);
+        let (al, ar) = self.reaches(x);
+        let energy = self.oscillator_energy(Law::Adiabatic).max(0.0);
+        let exponent = 2.0 / self.dimension as f64;
+        let moved = |gas: Gas, a: f64| Gas {
+            energy: gas.energy * (gas.length() / gas.free_length(a)).powf(exponent),
+            reach: a,
+            ..gas
+        };
+        PistonSystem {
+            x0: x,
+            v0: (2.0 * energy / self.mass).sqrt(),
+            left: moved(self.left, al),
+            right: moved(self.right, ar),
+            ..*self
+        }
+    }
+
+    /// Stiffness -dF/dx of each gas (left, right) at the balance.
+    pub fn stiffnesses(&self, law: Law) -> (f64, f64) {
+        let (al, ar) = self.reaches(self.balance(law));
+        (
+            self.left.stiffness(law, self.dimension, al),
+            self.right.stiffness(law, self.dimension, ar),
+        )
+    }
+
     /// Angular frequency of small oscillations about the pressure balance:
-    /// omega^2 = gamma P area^2 (1/V_L + 1/V_R) / M.
+    /// omega^2 = -dF/dx / M, gamma P (1/l_L + 1/l_R) / M for ideal gases.
     pub fn small_oscillation_omega(&self, law: Law) -> f64 {
-        let x = self.balance(law);
-        let (vl, vr) = self.volumes(x);
-        let (p, _) = self.pressures(law, x);
-        let g = law.gamma(self.dimension);
-        (g * p * self.area * self.area * (1.0 / vl + 1.0 / vr) / self.mass).sqrt()
+        let (kl, kr) = self.stiffnesses(law);
+        ((kl + kr) / self.mass).sqrt()
     }
 
     /// Angular frequency of the full nonlinear oscillation with the piston's
@@ -141,7 +253,7 @@ impl PistonSystem {
         let b = bisect(excess, centre, hi);
         // x = c + h sin(theta) removes the inverse-square-root ends.
         let (c, h) = (0.5 * (a + b), 0.5 * (b - a));
-        let n = 20_000;
+        let n = 2_000;
         let mut period = 0.0;
         for k in 0..n {
             let theta =
@@ -158,11 +270,22 @@ impl PistonSystem {
     /// The same system with the gases' inertia added to the piston's: a gas
     /// compressed uniformly moves with a velocity rising linearly from the
     /// wall to the piston, so its kinetic energy is (m_gas / 3) v^2 / 2
-    /// (Rayleigh's correction for a spring's own mass). The leading
-    /// correction to the frequency when M is not much larger than the gases' mass.
+    /// (Rayleigh's correction for a spring's own mass; in 2D and 3D the same
+    /// for the gas's motion along x). That flow energy is part of each gas's
+    /// measured kinetic energy but not of its heat, so it moves from the
+    /// gases to the oscillator: the state must be one where the gases
+    /// already flow with the piston (not a gas at rest behind a piston set
+    /// moving). The leading correction to the frequency when M is not much
+    /// larger than the gases' mass.
     pub fn with_gas_inertia(&self) -> PistonSystem {
+        let flowing = |gas: Gas| Gas {
+            energy: gas.energy - gas.mass * self.v0 * self.v0 / 6.0,
+            ..gas
+        };
         PistonSystem {
             mass: self.mass + (self.left.mass + self.right.mass) / 3.0,
+            left: flowing(self.left),
+            right: flowing(self.right),
             ..*self
         }
     }
@@ -187,11 +310,11 @@ impl PistonSystem {
         path
     }
 
-    /// Piston positions at which one gas has no free volume left.
+    /// Piston positions at which one gas has no room left.
     fn limits(&self) -> (f64, f64) {
         (
-            self.x0 - self.left.free_volume / self.area,
-            self.x0 + self.right.free_volume / self.area,
+            self.x0 + self.left.min_reach() - self.left.reach,
+            self.x0 + self.right.reach - self.right.min_reach(),
         )
     }
 }
@@ -218,15 +341,10 @@ mod tests {
     use super::*;
 
     fn symmetric(v0: f64) -> PistonSystem {
-        let gas = Gas {
-            energy: 2.5,
-            free_volume: 5.0,
-            mass: 5.0,
-        };
+        let gas = Gas::ideal(2.5, 5.0, 5.0);
         PistonSystem {
             dimension: 1,
             mass: 1000.0,
-            area: 1.0,
             x0: 6.0,
             v0,
             left: gas,
@@ -255,7 +373,10 @@ mod tests {
         assert!((full / small - 1.0).abs() > 0.01, "{full} vs {small}");
     }
 
-    /// An unbalanced start: the closed-form balance is where the force vanishes.
+    /// An unbalanced start: the balance is where the force vanishes, on the
+    /// side of the cooler gas, and for ideal gases where the closed form
+    /// (P V^gamma fixed, total length fixed) puts it:
+    /// l_L/l_R = (l_L0/l_R0) (P_L0/P_R0)^(1/gamma).
     #[test]
     fn balance_is_where_the_force_vanishes() {
         let mut s = symmetric(0.0);
@@ -263,8 +384,11 @@ mod tests {
         for law in [Law::Adiabatic, Law::Isothermal] {
             let x = s.balance(law);
             assert!(x > s.x0, "the hotter left gas pushes the piston right");
-            let scale = s.pressures(law, x).0 * s.area;
+            let scale = s.left.pv(1) / s.left.length();
             assert!(s.force(law, x).abs() < 1e-12 * scale, "{law:?}");
+            let ratio = (7.0f64 / 2.5).powf(1.0 / law.gamma(1));
+            let (ll, lr) = s.lengths(x);
+            assert!((ll / lr / ratio - 1.0).abs() < 1e-12, "{law:?}");
         }
     }
 
@@ -292,35 +416,93 @@ mod tests {
         assert!((s.potential(Law::Adiabatic, far) - u0 - e0).abs() < 1e-6 * e0);
     }
 
-    /// Adiabatic in 2D: gamma = 2, and the face area enters squared.
+    /// Adiabatic in 2D: gamma = 2; collisionless: 3, as in 1D.
     #[test]
     fn two_dimensional_gas_has_gamma_two() {
-        let gas = Gas {
-            energy: 10.0,
-            free_volume: 50.0,
-            mass: 10.0,
-        };
+        // Per unit face: K = 10 over free length 5, so P l = (2/2) K = 10.
+        let gas = Gas::ideal(10.0, 10.0, 5.0);
         let s = PistonSystem {
             dimension: 2,
             mass: 500.0,
-            area: 10.0,
             x0: 5.0,
             v0: 0.0,
             left: gas,
             right: gas,
         };
         assert_eq!(Law::Adiabatic.gamma(2), 2.0);
-        // P = (2/2) K / V = 0.2; omega^2 = 2 * 0.2 * 100 * (2/50) / 500.
-        let expected = (2.0 * 0.2 * 100.0 * 0.04 / 500.0f64).sqrt();
+        // omega^2 = gamma (P l) (1/l^2 + 1/l^2) / M = 2 * 10 * (2/25) / 500.
+        let expected = (2.0 * 10.0 * 2.0 / 25.0 / 500.0f64).sqrt();
         assert!((s.small_oscillation_omega(Law::Adiabatic) - expected).abs() < 1e-12);
+        let ratio = s.small_oscillation_omega(Law::Collisionless)
+            / s.small_oscillation_omega(Law::Adiabatic);
+        assert!((ratio - 1.5f64.sqrt()).abs() < 1e-12);
+    }
+
+    /// The edge term: the force is the derivative of the potential, and the
+    /// stiffness the derivative of the force (central differences).
+    #[test]
+    fn force_and_stiffness_are_derivatives_with_an_edge_term() {
+        let gas = |energy| Gas {
+            energy,
+            mass: 1.0,
+            reach: 10.0,
+            excluded: 0.8,
+            edge: 0.3,
+        };
+        let s = PistonSystem {
+            dimension: 2,
+            mass: 100.0,
+            x0: 10.0,
+            v0: 0.0,
+            left: gas(12.0),
+            right: gas(9.0),
+        };
+        let h = 1e-5;
+        for law in [Law::Adiabatic, Law::Isothermal, Law::Collisionless] {
+            for x in [8.0, 10.0, 11.5] {
+                let dudx = (s.potential(law, x + h) - s.potential(law, x - h)) / (2.0 * h);
+                assert!((s.force(law, x) + dudx).abs() < 1e-7, "{law:?} at {x}");
+            }
+            let c = s.balance(law);
+            let k = -(s.force(law, c + h) - s.force(law, c - h)) / (2.0 * h);
+            let (kl, kr) = s.stiffnesses(law);
+            assert!(
+                ((kl + kr) / k - 1.0).abs() < 1e-7,
+                "{law:?}: {} vs {k}",
+                kl + kr
+            );
+        }
+    }
+
+    /// Moved along its adiabat to the balance, the oscillation is the same:
+    /// same oscillator energy, same frequency, no force there.
+    #[test]
+    fn at_balance_is_the_same_oscillation() {
+        let mut s = symmetric(0.0);
+        s.left.energy = 4.0;
+        s.left.excluded = 0.5;
+        s.right.edge = 0.2;
+        let b = s.at_balance();
+        let e = s.oscillator_energy(Law::Adiabatic);
+        assert!((b.oscillator_energy(Law::Adiabatic) / e - 1.0).abs() < 1e-9);
+        assert!((b.omega(Law::Adiabatic) / s.omega(Law::Adiabatic) - 1.0).abs() < 1e-6);
+        assert!(b.force(Law::Adiabatic, b.x0).abs() < 1e-12);
     }
 
     #[test]
     fn gas_inertia_lowers_the_frequency_as_a_spring_mass_does() {
-        let s = symmetric(1e-4);
+        // At a turning point (no flow), only the inertia changes.
+        let s = symmetric(0.0);
         let heavy = s.with_gas_inertia();
         let ratio = heavy.small_oscillation_omega(Law::Adiabatic)
             / s.small_oscillation_omega(Law::Adiabatic);
         assert!((ratio - (1000.0 / (1000.0 + 10.0 / 3.0f64)).sqrt()).abs() < 1e-12);
+        // Moving, the gases' flow energy moves to the oscillator: the total
+        // is the same.
+        let s = symmetric(0.05);
+        let heavy = s.with_gas_inertia();
+        let total = |t: &PistonSystem| 0.5 * t.mass * t.v0 * t.v0 + t.left.energy + t.right.energy;
+        assert!((total(&heavy) - total(&s)).abs() < 1e-12);
+        assert!(heavy.left.energy < s.left.energy);
     }
 }

@@ -3,9 +3,11 @@
 //! independent for hard particles: the mass-weighted velocities are uniform
 //! on the sphere of radius sqrt(2K) in N_free dimensions, so each free
 //! degree of freedom holds K/N_free on average (the piston, moving along x
-//! only, has one); the piston's position makes the free volumes
-//! V_L/(V_L+V_R) ~ Beta(N_L+1, N_R+1), the configurational weight V_L^N_L
-//! V_R^N_R of ideal (in 1D, by the Tonks mapping, hard-rod) gases.
+//! only, has one); the piston's position makes the free lengths
+//! l_L/(l_L+l_R) ~ Beta(N_L+1, N_R+1), the configurational weight l_L^N_L
+//! l_R^N_R of ideal gases (in 1D, by the Tonks mapping, hard rods; in 2D
+//! and 3D dilute hard disks and spheres, whose free length is the reach
+//! less a constant, up to the small edge term).
 
 use super::piston::{Gas, Law, PistonSystem};
 use rand::{RngExt, SeedableRng};
@@ -61,19 +63,10 @@ fn sample_oscillator_share(
         let state = PistonSystem {
             dimension,
             mass: 1.0,
-            area: 1.0,
             x0: split,
             v0: (2.0 * piston / total).sqrt(),
-            left: Gas {
-                energy: kl / total,
-                free_volume: split,
-                mass: 0.0,
-            },
-            right: Gas {
-                energy: kr / total,
-                free_volume: 1.0 - split,
-                mass: 0.0,
-            },
+            left: Gas::ideal(kl / total, 0.0, split),
+            right: Gas::ideal(kr / total, 0.0, 1.0 - split),
         };
         let e = state.oscillator_energy(Law::Adiabatic);
         sum += e;

@@ -1,0 +1,84 @@
+//! Shared by the piston tests: run a descriptor's ensemble, and the
+//! statistics of a result over its runs.
+#![allow(dead_code)]
+
+use bonkers::analysis::piston::{Options, measure};
+use bonkers::analysis::piston_state::{Geometry, Samples};
+use bonkers::analysis::summary::Stats;
+use bonkers::study::descriptor::parse;
+use bonkers::study::output::RunOutput;
+use bonkers::study::plan::plan;
+use bonkers::study::plan_types::RunSpec;
+use rand::SeedableRng;
+
+/// Run every planned run of a descriptor.
+pub fn ensemble(text: &str) -> Vec<(RunSpec, RunOutput)> {
+    let loaded = parse("test.toml", text).expect("valid descriptor");
+    plan(&loaded)
+        .expect("plan")
+        .into_iter()
+        .map(|r| {
+            let out = bonkers::simulate::run(&r).expect("run");
+            (r, out)
+        })
+        .collect()
+}
+
+/// Statistics of one scalar (or of a function of the scalars) over the runs.
+pub fn stats(runs: &[(RunSpec, RunOutput)], f: impl Fn(&RunOutput) -> Option<f64>) -> Stats {
+    let v: Vec<f64> = runs
+        .iter()
+        .map(|(_, o)| f(o).unwrap_or(f64::NAN))
+        .filter(|v| v.is_finite())
+        .collect();
+    Stats::of(&v)
+}
+
+pub fn scalar(name: &str) -> impl Fn(&RunOutput) -> Option<f64> + '_ {
+    move |o| o.scalar(name)
+}
+
+/// `|mean - 1| <= 4 standard errors`, with the numbers in the message.
+pub fn assert_one(s: &Stats, what: &str) {
+    assert!(
+        (s.mean - 1.0).abs() <= 4.0 * s.stderr,
+        "{what} = {} +- {} (n = {})",
+        s.mean,
+        s.stderr,
+        s.n
+    );
+}
+
+/// `|mean - 1| > 4 standard errors`: the ensemble rejects this prediction.
+pub fn assert_not_one(s: &Stats, what: &str) {
+    assert!(
+        (s.mean - 1.0).abs() > 4.0 * s.stderr,
+        "{what} = {} +- {} should differ from 1",
+        s.mean,
+        s.stderr
+    );
+}
+
+/// The geometry a run's analysis saw (its scene rebuilt from its seed).
+pub fn geometry<const D: usize>(spec: &RunSpec) -> Geometry {
+    let scene = bonkers::scene::resolve(&spec.descriptor.scene).expect("scene");
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(spec.seed);
+    let built = bonkers::scene::build::<D>(&scene, &mut rng).expect("build");
+    Geometry::of(&built).expect("piston")
+}
+
+/// A run's piston results measured again with another geometry (the
+/// stored series must hold every sample: at most 4000 of them).
+pub fn measure_with(spec: &RunSpec, out: &RunOutput, g: &Geometry) -> Vec<(&'static str, f64)> {
+    let samples = Samples::of(out).expect("piston series");
+    assert!(samples.len() <= bonkers::simulate::MAX_STORED_POINTS);
+    measure(g, &samples, &Options::of(&spec.descriptor))
+}
+
+/// One result of `measure_with`.
+pub fn result(results: &[(&'static str, f64)], name: &str) -> f64 {
+    results
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map_or(f64::NAN, |r| r.1)
+}
