@@ -59,6 +59,13 @@ fn heavy_wall_oscillates_at_the_two_dimensional_adiabatic_frequency() {
         10,
     );
     let runs = ensemble(&text);
+    // The report's piston section presents every result the analysis gives.
+    let (spec, out) = &runs[0];
+    let names: Vec<&str> = measure_with(spec, out, &geometry::<2>(spec))
+        .iter()
+        .map(|r| r.0)
+        .collect();
+    assert_eq!(names, bonkers::analysis::piston::RESULTS);
     let adiabatic = stats(&runs, scalar("frequency_ratio"));
     assert_eq!(adiabatic.n, 10, "every run measured a frequency");
     assert_one(&adiabatic, "omega/omega_adiabatic");

@@ -19,7 +19,7 @@ fn quickstart_runs_and_its_tables_read_back() {
         "index.html",
         "manifest.json",
         "mackay_spacetime_200.svg",
-        "scalar_frequency_ratio.svg",
+        "piston_frequency_ratio_1d.svg",
     ] {
         assert!(out.join(file).is_file(), "{file} missing");
     }

@@ -70,6 +70,11 @@ pub fn per_run<const D: usize>(
     Ok(())
 }
 
+/// Whether a named analysis gives (and its section presents) this result.
+pub fn presents(d: &Descriptor, result: &str) -> bool {
+    d.analysis.contains_key("piston") && piston::RESULTS.contains(&result)
+}
+
 /// Theory for a result, from whichever analysis defines it.
 pub fn theory(d: &Descriptor, result: &str) -> Option<f64> {
     if d.analysis.contains_key("piston") {

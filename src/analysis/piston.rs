@@ -70,7 +70,38 @@ pub fn per_run<const D: usize>(
     Ok(())
 }
 
-/// Everything measured in one run, by result name.
+/// Every result `measure` gives, in 1D and (the last eight) beside a wall in
+/// 2D/3D: the report's piston section presents them all.
+pub const RESULTS: &[&str] = &[
+    "frequency",
+    "frequency_periods",
+    "omega_adiabatic",
+    "omega_adiabatic_start",
+    "omega_adiabatic_small",
+    "omega_adiabatic_inertia",
+    "omega_isothermal",
+    "frequency_ratio",
+    "frequency_ratio_inertia",
+    "frequency_ratio_isothermal",
+    "initial_piston_share",
+    "relaxation_time",
+    "excess_left",
+    "oscillator_share",
+    "piston_share",
+    "mass_ratio",
+    "mass_over_gas",
+    "speed_ratio",
+    "omega_collisionless",
+    "frequency_ratio_collisionless",
+    "exchange_time",
+    "omega_tau",
+    "omega_exchange",
+    "frequency_ratio_exchange",
+    "relaxation_time_exchange",
+    "excluded_fraction",
+];
+
+/// Everything measured in one run, by result name (`RESULTS`).
 pub fn measure(g: &Geometry, s: &Samples, o: &Options) -> Vec<(&'static str, f64)> {
     let start = s.system(g, 0);
     let measured = oscillation(&s.t, &s.x, o.periods, o.band);

@@ -30,9 +30,8 @@ pub fn render(inp: &Inputs) -> String {
     let mut md = String::new();
     header(&mut md, inp);
     what_was_run(&mut md, inp);
-    plots(&mut md, inp.figures);
-    theory_table(&mut md, inp);
-    cost(&mut md, inp);
+    energy_drift(&mut md, inp.runs);
+    // The study's own sections first: they answer its questions.
     for s in inp.sections {
         let _ = writeln!(
             md,
@@ -44,6 +43,9 @@ pub fn render(inp: &Inputs) -> String {
             let _ = writeln!(md, "![{}]({})\n", one_line(caption), file);
         }
     }
+    theory_table(&mut md, inp);
+    plots(&mut md, inp.figures);
+    cost(&mut md, inp);
     failures(&mut md, inp.meta);
     footer(&mut md, inp.runs);
     md
@@ -131,6 +133,23 @@ fn what_was_run(md: &mut String, inp: &Inputs) {
     );
 }
 
+/// The conservation check every run without thermal walls makes.
+fn energy_drift(md: &mut String, runs: &[(RunSpec, RunOutput)]) {
+    let drifts: Vec<f64> = runs
+        .iter()
+        .filter_map(|(_, o)| o.scalar("energy_drift"))
+        .collect();
+    if let Some(worst) = drifts.iter().copied().reduce(f64::max) {
+        let _ = writeln!(
+            md,
+            "Energy is conserved: over the measured time the kinetic energy of no run changed by \
+             more than {} of itself (round-off; `energy_drift` in `runs.parquet`, {} runs).\n",
+            num(worst),
+            drifts.len()
+        );
+    }
+}
+
 fn plots(md: &mut String, figures: &[Figure]) {
     if figures.is_empty() {
         return;
@@ -141,28 +160,35 @@ fn plots(md: &mut String, figures: &[Figure]) {
     }
 }
 
+/// Every result that has a theory to compare with, point by point (all
+/// results, with or without theory, are in summary.parquet).
 fn theory_table(md: &mut String, inp: &Inputs) {
     md.push_str("## Measurements and theory\n\n");
-    if inp.summary.is_empty() {
-        md.push_str("No scalar results were measured.\n\n");
+    let compared: Vec<&SummaryRow> = inp.summary.iter().filter(|r| r.theory.is_some()).collect();
+    if compared.is_empty() {
+        let _ = writeln!(
+            md,
+            "No result here has a theory to compare with. Every result of every point, with its \
+             n, mean, standard error and 95% interval, is in `summary.parquet`.\n"
+        );
         return;
     }
     let runs_per_point = runs_per_point(inp.runs);
-    let flagged = inp
-        .summary
+    let flagged = compared
         .iter()
         .filter(|r| r.z.is_some_and(|z| z.abs() > Z_FLAG))
         .count();
     let _ = writeln!(
         md,
-        "Mean ± standard error over replicas; the 95% interval uses Student's t. \
-         z = (mean − theory) / stderr; rows with |z| > {Z_FLAG} are marked ⚠ ({flagged} of {}). \
-         n counts runs that measured the result (NaN results are left out).\n",
-        inp.summary.len()
+        "The results with a theory to compare with; every result of every point is in \
+         `summary.parquet`. Mean ± standard error over replicas; the 95% interval uses \
+         Student's t. z = (mean − theory) / stderr; rows with |z| > {Z_FLAG} are marked ⚠ \
+         ({flagged} of {}). n counts runs that measured the result (NaN results are left out).\n",
+        compared.len()
     );
     md.push_str("| point | parameters | result | n | mean ± stderr | 95% CI | theory | z |\n");
     md.push_str("|---:|---|---|---:|---:|---:|---:|---:|\n");
-    for r in inp.summary {
+    for r in compared {
         let total = runs_per_point.get(&r.point_id).copied().unwrap_or(0);
         let n = if r.n as usize == total {
             r.n.to_string()

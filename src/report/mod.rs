@@ -57,7 +57,7 @@ pub fn write(
 ) -> anyhow::Result<()> {
     std::fs::create_dir_all(out_dir)
         .with_context(|| format!("creating report folder {}", out_dir.display()))?;
-    let figures = plots::write_all(out_dir, runs, summary)?;
+    let figures = plots::write_all(out_dir, descriptor, runs, summary)?;
     let points = plots::points(runs);
     let md = markdown::render(&markdown::Inputs {
         descriptor,

@@ -5,7 +5,8 @@
 use super::chart::{self, ChartSpec, Paint};
 use super::labels::{short_name, slug};
 use super::{plot_hist, plot_scalars, plot_series};
-use crate::analysis::summary_types::SummaryRow;
+use crate::analysis::{self, summary_types::SummaryRow};
+use crate::study::descriptor_types::Descriptor;
 use crate::study::output::RunOutput;
 use crate::study::plan_types::RunSpec;
 use crate::study::store::write_atomic;
@@ -32,16 +33,24 @@ pub fn points(runs: &[(RunSpec, RunOutput)]) -> Points {
     points
 }
 
-/// Render and write all generic plots; returns them in report order.
+/// Render and write the generic plots; returns them in report order. A
+/// result an analysis presents in its own section gets no generic plot, nor
+/// does `energy_drift` (the report gives its largest value in a line).
 pub fn write_all(
     out_dir: &Path,
+    descriptor: &Descriptor,
     runs: &[(RunSpec, RunOutput)],
     summary: &[SummaryRow],
 ) -> anyhow::Result<Vec<Figure>> {
     let points = points(runs);
     let mut charts: Vec<(String, ChartSpec, String)> = Vec::new();
     let mut files = FileNames::default();
-    for (name, spec) in plot_scalars::charts(summary, &points) {
+    let generic: Vec<SummaryRow> = summary
+        .iter()
+        .filter(|r| r.result != "energy_drift" && !analysis::presents(descriptor, &r.result))
+        .cloned()
+        .collect();
+    for (name, spec) in plot_scalars::charts(&generic, &points) {
         let caption =
             format!("{name}: mean ± standard error per sweep point, with theory where known");
         charts.push((files.unique("scalar", &name), spec, caption));

@@ -228,7 +228,8 @@ fn runs_table(runs: &[(RunSpec, RunRecord)]) -> anyhow::Result<DataFrame> {
             .map(|(_, r)| r.output.collisions)
             .collect::<Vec<u64>>(),
     ));
-    let timings: [(&str, fn(&RunOutput) -> f64); 3] = [
+    type Timing = fn(&RunOutput) -> f64;
+    let timings: [(&str, Timing); 3] = [
         ("wall_seconds", |o| o.wall_seconds),
         ("cpu_seconds", |o| o.cpu_seconds),
         ("prepare_seconds", |o| o.prepare_seconds),
