@@ -101,6 +101,7 @@ fn theory(name: &str, params: &[(String, f64)]) -> Option<f64> {
     match name {
         "frequency" => Some((get("scene.species.0.count")? / get("scene.piston.mass")?).sqrt()),
         "biased" => Some(2.0),
+        "sometimes" => get("scene.piston.mass"),
         _ => None,
     }
 }
