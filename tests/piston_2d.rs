@@ -6,9 +6,10 @@
 mod piston_common;
 
 use bonkers::analysis::summary::Stats;
-use bonkers::theory::piston_equilibrium::{degrees_of_freedom, oscillator_share};
+use bonkers::theory::piston_equilibrium::degrees_of_freedom;
 use piston_common::{
-    assert_not_one, assert_one, ensemble, geometry, measure_with, result, scalar, stats,
+    assert_equipartition, assert_not_one, assert_one, ensemble, geometry, measure_with, result,
+    scalar, stats,
 };
 
 /// The preset with its piston and, optionally, other disks.
@@ -176,40 +177,8 @@ fn long_time_wall_share_is_equipartition() {
         16,
     );
     let runs = ensemble(&text);
-    let share = stats(&runs, scalar("piston_share"));
+    assert_eq!(runs.len(), 16);
     let expected = 1.0 / degrees_of_freedom(2, 10) as f64;
     assert!((expected - 1.0 / 21.0).abs() < 1e-15);
-    eprintln!(
-        "piston share {} +- {} (1/21 = {expected})",
-        share.mean, share.stderr
-    );
-    assert!(
-        4.0 * share.stderr < expected,
-        "the test must be able to tell: stderr {}",
-        share.stderr
-    );
-    assert!(
-        (share.mean - expected).abs() <= 4.0 * share.stderr,
-        "share {} +- {} vs {expected}",
-        share.mean,
-        share.stderr
-    );
-    let oscillator = stats(&runs, scalar("oscillator_share"));
-    let (theory, theory_se) = oscillator_share(2, 5, 5, bonkers::analysis::piston::DRAWS);
-    let se = oscillator.stderr.hypot(theory_se);
-    eprintln!(
-        "oscillator share {} +- {} ({theory} +- {theory_se})",
-        oscillator.mean, oscillator.stderr
-    );
-    assert!(
-        (oscillator.mean - theory).abs() <= 4.0 * se,
-        "oscillator share {} +- {} vs {theory} +- {theory_se}",
-        oscillator.mean,
-        oscillator.stderr
-    );
-    assert_eq!(
-        stats(&runs, scalar("relaxation_time")).n,
-        16,
-        "every run relaxed"
-    );
+    assert_equipartition(&runs, 2, 5, expected);
 }

@@ -9,6 +9,7 @@ use bonkers::study::descriptor::parse;
 use bonkers::study::output::RunOutput;
 use bonkers::study::plan::plan;
 use bonkers::study::plan_types::RunSpec;
+use bonkers::theory::piston_equilibrium::oscillator_share;
 use rand::SeedableRng;
 
 /// Run every planned run of a descriptor.
@@ -81,4 +82,51 @@ pub fn result(results: &[(&'static str, f64)], name: &str) -> f64 {
         .iter()
         .find(|(n, _)| *n == name)
         .map_or(f64::NAN, |r| r.1)
+}
+
+/// Long-time equipartition of a relaxed ensemble with `per_side` gas
+/// particles on each side in `dimension` D: the piston's share of the kinetic
+/// energy is `expected` (1/N_free), its oscillator energy the microcanonical
+/// mean, each within 4 standard errors, and every run relaxed.
+pub fn assert_equipartition(
+    runs: &[(RunSpec, RunOutput)],
+    dimension: usize,
+    per_side: usize,
+    expected: f64,
+) {
+    let share = stats(runs, scalar("piston_share"));
+    let oscillator = stats(runs, scalar("oscillator_share"));
+    let (theory, theory_se) = oscillator_share(
+        dimension,
+        per_side,
+        per_side,
+        bonkers::analysis::piston::DRAWS,
+    );
+    eprintln!(
+        "piston share {} +- {} ({expected}); oscillator share {} +- {} ({theory} +- {theory_se})",
+        share.mean, share.stderr, oscillator.mean, oscillator.stderr
+    );
+    assert!(
+        4.0 * share.stderr < expected,
+        "the test must be able to tell: stderr {}",
+        share.stderr
+    );
+    assert!(
+        (share.mean - expected).abs() <= 4.0 * share.stderr,
+        "share {} +- {} vs {expected}",
+        share.mean,
+        share.stderr
+    );
+    let se = oscillator.stderr.hypot(theory_se);
+    assert!(
+        (oscillator.mean - theory).abs() <= 4.0 * se,
+        "oscillator share {} +- {} vs {theory} +- {theory_se}",
+        oscillator.mean,
+        oscillator.stderr
+    );
+    assert_eq!(
+        stats(runs, scalar("relaxation_time")).n,
+        runs.len() as u64,
+        "every run relaxed"
+    );
 }
