@@ -175,14 +175,23 @@ fn boundaries(points: &[&Point], dimension: usize) -> String {
             }
             md.push(')');
         }
-        let _ = write!(
-            md,
-            "; agrees within an error bar that would show 5% at {}; small deviations (< 5%) at {}; \
-             breaks down (> 5%) at {}",
-            count_of(Verdict::Agrees),
-            count_of(Verdict::Small),
-            count_of(Verdict::Breaks)
-        );
+        for (verdict, label) in [
+            (
+                Verdict::Agrees,
+                "agrees within an error bar that would show 5%",
+            ),
+            (Verdict::Small, "small deviations (< 5%)"),
+            (Verdict::Breaks, "breaks down (> 5%)"),
+        ] {
+            let n = count_of(verdict);
+            if n > 0 {
+                let _ = write!(
+                    md,
+                    "; {label} at {n} point{}",
+                    if n == 1 { "" } else { "s" }
+                );
+            }
+        }
         if breaks_to.is_finite() {
             let _ = write!(md, ", at every point with M/M_gas ≤ {}", num(breaks_to));
         }
