@@ -346,9 +346,10 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
     #[inline(always)]
     fn prefetch(&self, i: usize) {
         prefetch(&self.len[i]);
-        if let Some(list) = self.entries.get(i * self.cap..(i + 1) * self.cap) {
-            prefetch(&list[0]);
-            prefetch(&list[list.len() - 1]);
+        let room = self.entries.get(i * self.cap..(i + 1) * self.cap);
+        if let Some((first, last)) = room.and_then(|r| r.first().zip(r.last())) {
+            prefetch(first);
+            prefetch(last);
         }
     }
 
