@@ -10,6 +10,7 @@ pub mod collide;
 pub mod neighbours;
 pub mod observer;
 pub mod particle;
+mod prefetch;
 pub mod queue;
 mod save;
 pub mod simulation;

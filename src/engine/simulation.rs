@@ -14,6 +14,7 @@ use super::collide::{bounce, contact_time_before, line_contact_time};
 use super::neighbours::{Image, Neighbourhood, PLANE, image_shift, no_shift, separation};
 use super::observer::{Observer, PairCollision, Snapshot, WallHit};
 use super::particle::Particle;
+use super::prefetch::prefetch;
 use super::thermal;
 use super::vector::{Vector, axis0, dot, norm2, sub};
 
@@ -203,6 +204,13 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             }
             self.now = t;
             self.handle(i);
+            // The next event is almost always the queue's front now: start
+            // loading what it will read while this loop iteration finishes.
+            if let Some((i, _)) = self.queue.peek() {
+                prefetch(&self.next[i]);
+                prefetch(&self.particles[i]);
+                self.neighbours.prefetch(i);
+            }
             self.events_since_rebase += 1;
             if self.events_since_rebase >= self.rebase_every {
                 self.rebase();
@@ -363,6 +371,11 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 best_t = t;
                 best = Next::Renew;
             }
+        }
+        // Partners' records lie scattered in memory: ask for all of them
+        // first, so that their cache misses overlap.
+        for (j, _) in self.neighbours.candidates(i) {
+            prefetch(&self.particles[j]);
         }
         let x_i = p.position_at(now);
         for (j, image) in self.neighbours.candidates(i) {

@@ -6,6 +6,7 @@
 
 use super::Image;
 use crate::engine::boundary::SimBox;
+use crate::engine::prefetch::prefetch;
 use crate::engine::vector::Vector;
 
 const NONE: u32 = u32::MAX;
@@ -97,6 +98,25 @@ impl<const D: usize> Grid<D> {
     /// Call `f(j, image, x_j)` for every point j (at x_j) filed in the 3^D
     /// cells around position `x` (x itself may be filed there too).
     pub fn for_each_near(&self, x: &Vector<D>, mut f: impl FnMut(usize, Image, &Vector<D>)) {
+        let (near, count) = self.cells_near(x);
+        // Each cell's points lie elsewhere in memory: ask for all of them
+        // first, so that their cache misses overlap (see prefetch.rs).
+        for &(cell, _) in &near[..count] {
+            if let (Some(first), Some(last)) = (self.cells[cell].first(), self.cells[cell].last()) {
+                prefetch(first);
+                prefetch(last);
+            }
+        }
+        for &(cell, image) in &near[..count] {
+            for (j, x_j) in &self.cells[cell] {
+                f(*j as usize, image, x_j);
+            }
+        }
+    }
+
+    /// The (up to) 3^D cells around position `x` (D <= 3): each one's linear
+    /// index and the image code of the points found there.
+    fn cells_near(&self, x: &Vector<D>) -> ([(usize, Image); 27], usize) {
         let c = self.coords(x);
         // Per axis, the (up to) three neighbouring rows: their part of the
         // linear cell index and of the image code.
@@ -120,6 +140,8 @@ impl<const D: usize> Grid<D> {
             place *= 3;
         }
         // Every combination of rows, odometer style.
+        let mut near = [(0usize, 0 as Image); 27];
+        let mut found = 0;
         let mut at = [0usize; D];
         loop {
             let (mut cell, mut image) = (0usize, 0 as Image);
@@ -127,9 +149,8 @@ impl<const D: usize> Grid<D> {
                 cell += rows[k][at[k]].0;
                 image += rows[k][at[k]].1;
             }
-            for (j, x_j) in &self.cells[cell] {
-                f(*j as usize, image, x_j);
-            }
+            near[found] = (cell, image);
+            found += 1;
             let mut k = 0;
             loop {
                 at[k] += 1;
@@ -139,7 +160,7 @@ impl<const D: usize> Grid<D> {
                 at[k] = 0;
                 k += 1;
                 if k == D {
-                    return;
+                    return (near, found);
                 }
             }
         }

@@ -24,6 +24,7 @@ use super::grid::Grid;
 use super::{Image, Neighbourhood, PLANE, Persist, image_shift};
 use crate::engine::boundary::SimBox;
 use crate::engine::particle::Particle;
+use crate::engine::prefetch::prefetch;
 use crate::engine::vector::{Vector, axis0, dot, norm2, sub};
 
 /// A list entry packs a particle index and an image code: `j << 5 | image`.
@@ -339,6 +340,17 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
             self.list(i)
         };
         list.iter().map(|&e| unpack(e))
+    }
+
+    /// List i's length and the two ends of its room (a hint).
+    #[inline(always)]
+    fn prefetch(&self, i: usize) {
+        prefetch(&self.len[i]);
+        let room = self.entries.get(i * self.cap..(i + 1) * self.cap);
+        if let Some((first, last)) = room.and_then(|r| r.first().zip(r.last())) {
+            prefetch(first);
+            prefetch(last);
+        }
     }
 
     /// When p (particle i) reaches the edge of its neighbourhood.

@@ -72,6 +72,9 @@ pub trait Neighbourhood<const D: usize>: Sized + Clone + Send {
     fn can_reach_wall(&self, _i: usize, _high: bool) -> bool {
         true
     }
+    /// Start loading i's neighbourhood, which is about to be read (a hint).
+    #[inline(always)]
+    fn prefetch(&self, _i: usize) {}
     /// When `p` (particle i) next needs its neighbourhood renewed (absolute time).
     fn next_renewal(&self, i: usize, p: &Particle<D>) -> Option<f64>;
     /// Renew particle i's neighbourhood at time `now` (moving `p` there);
