@@ -204,7 +204,7 @@ fn bad_placements() {
     assert_says(
         2,
         "box = [10.0, 10.0]\nspecies = [{ name = \"a\", count = 90 }]\n",
-        &["0.547", "0.38", "compress", "lattice"],
+        &["0.547 in 2D", "compress", "lattice"],
     );
     // Species in overlapping but different regions cannot share a lattice.
     assert_says(

@@ -121,6 +121,48 @@ fn scene_shapes_and_species() {
             ],
         ),
         case(
+            "a mass whose inverse overflows",
+            edit("mass = 1.0", "mass = 1e-320"),
+            &[
+                "s.toml:16:1: `scene.species.0.mass`: 1e-320 is too small: its inverse overflows",
+                "from 1e-300 up",
+            ],
+        ),
+        case(
+            "more particles than a run can hold",
+            edit("count = 10\nmass = 1.0", "count = 60000000\nmass = 1.0")
+                .replace("\"scene.species.0.count\" = { from = 5, to = 15, steps = 2 }\n", ""),
+            &["`scene.species`: 60000000 particles are more than one run can hold (50000000 at most)"],
+        ),
+        case(
+            "disks denser than random insertion reaches",
+            edit(
+                "dimension = 1\nbox = [40.0]\nboundary = [\"walls\"]",
+                "dimension = 2\nbox = [6.0, 6.0]\nboundary = [\"walls\", \"walls\"]",
+            )
+            .replace("[[scene.species]]\nname = \"gas\"\ncount = 10\nmass = 1.0\nregion = { from = [0.0], to = [0.45] }\n", "")
+            .replace("\"scene.species.0.count\" = { from = 5, to = 15, steps = 2 }\n", "")
+            .replace("[scene.piston]", "[[scene.species]]\nname = \"disk\"\ncount = 30\n\n[scene.piston]"),
+            &[
+                "`scene.species.0.count`: the particles would fill packing fraction 0.6545 of their region; random insertion jams at 0.547 in 2D",
+                "kind = \"compress\"",
+            ],
+        ),
+        case(
+            "disks denser than compression reaches",
+            edit(
+                "dimension = 1\nbox = [40.0]\nboundary = [\"walls\"]",
+                "dimension = 2\nbox = [6.0, 6.0]\nboundary = [\"walls\", \"walls\"]\nplacement = { kind = \"compress\" }",
+            )
+            .replace("[[scene.species]]\nname = \"gas\"\ncount = 10\nmass = 1.0\nregion = { from = [0.0], to = [0.45] }\n", "")
+            .replace("\"scene.species.0.count\" = { from = 5, to = 15, steps = 2 }\n", "")
+            .replace("[scene.piston]", "[[scene.species]]\nname = \"disk\"\ncount = 45\n\n[scene.piston]"),
+            &[
+                "`scene.species.0.count`: the particles would fill packing fraction 0.9817 of their region; compression reaches at most 0.88 in 2D",
+                "kind = \"lattice\"",
+            ],
+        ),
+        case(
             "mass range with a negative end",
             edit("mass = 1.0", "mass = [-1.0, 1.0]"),
             &["s.toml:16:1: `scene.species.0.mass`: must be a positive number, got -1"],

@@ -9,6 +9,10 @@ use rand_chacha::ChaCha8Rng;
 /// Tries per particle before random insertion is given up as jammed.
 const TRIES: usize = 100_000;
 
+/// Packing fractions at which random sequential insertion jams in an
+/// unbounded space (2D, 3D); finite boxes with walls jam below them.
+pub const JAMMING: [f64; 2] = [0.547, 0.384];
+
 /// Refuses, rather than loops forever, when a region is too full.
 pub fn random<const D: usize>(
     slots: &[Slot<D>],
@@ -39,11 +43,12 @@ pub fn random<const D: usize>(
         let Some(x) = found else {
             return Err(format!(
                 "could not place particle {i} at random without overlap after {TRIES} tries ({} placed); \
-                 random insertion jams near packing fraction 0.547 in 2D and 0.38 in 3D (and well \
-                 before that in practice): use `placement = {{ kind = \"compress\" }}` for dense \
+                 random insertion jams near packing fraction {} in {D}D (and well before that in \
+                 practice): use `placement = {{ kind = \"compress\" }}` for dense \
                  fluids and glasses, `{{ kind = \"lattice\" }}` for crystals, or fewer or smaller \
                  particles or a larger region",
-                placed.len()
+                placed.len(),
+                JAMMING[D - 2]
             ));
         };
         cells.push(&x);

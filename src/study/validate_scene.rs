@@ -2,7 +2,13 @@
 //! builder would refuse at run time, found before anything runs.
 
 use super::validate::{Check, bad, non_negative, positive};
+use crate::scene::compress;
+use crate::scene::placement::JAMMING;
+use crate::scene::space::ball_volume;
 use crate::scene::spec::{Boundary, Mass, Placement, SceneSpec, Side, SpeciesSpec, Velocities};
+
+/// Particles per run: at ~300 bytes each (3D), 15 GB.
+const MAX_PARTICLES: usize = 50_000_000;
 
 /// The dimension a scene runs in: as given, else 1 (what the simulator uses).
 pub fn dimension(s: &SceneSpec) -> usize {
@@ -48,6 +54,7 @@ pub fn scene(s: &SceneSpec) -> Check {
     }
     species(s)?;
     rods_fit(s)?;
+    balls_fit(s)?;
     placement(s)?;
     velocities(s)?;
     piston(s)?;
@@ -90,6 +97,14 @@ fn species(s: &SceneSpec) -> Check {
             "scene.species",
             "the scene has no particles",
             Some("add a `[[scene.species]]` table with `name` and `count`"),
+        );
+    }
+    let n = particles(s);
+    if n > MAX_PARTICLES {
+        return bad(
+            "scene.species",
+            format!("{n} particles are more than one run can hold ({MAX_PARTICLES} at most)"),
+            Some("the engine needs about 100-300 bytes per particle; use fewer particles"),
         );
     }
     let per_side = s.piston.as_ref().and_then(|p| p.per_side);
@@ -135,10 +150,10 @@ fn species(s: &SceneSpec) -> Check {
         }
         match sp.mass {
             Mass::Fixed(m) if m == f64::INFINITY => {}
-            Mass::Fixed(m) => positive(&key("mass"), m)?,
+            Mass::Fixed(m) => mass(&key("mass"), m)?,
             Mass::Range([lo, hi]) => {
-                positive(&key("mass"), lo)?;
-                positive(&key("mass"), hi)?;
+                mass(&key("mass"), lo)?;
+                mass(&key("mass"), hi)?;
                 if lo > hi {
                     return bad(
                         key("mass"),
@@ -262,7 +277,7 @@ fn piston(s: &SceneSpec) -> Check {
             Some("place the gases with `kind = \"random\"` or `kind = \"lattice\"` on either side"),
         );
     }
-    positive("scene.piston.mass", p.mass)?;
+    mass("scene.piston.mass", p.mass)?;
     non_negative("scene.piston.radius", p.radius)?;
     if !(p.position > 0.0 && p.position < 1.0) {
         return bad(
@@ -325,6 +340,85 @@ fn clear_of_piston(s: &SceneSpec) -> Check {
                 ((x - p.radius) / length * 100.0).floor() / 100.0
             )),
         );
+    }
+    Ok(())
+}
+
+/// A finite mass whose inverse (what the engine stores) is finite too.
+fn mass(key: &str, m: f64) -> Check {
+    positive(key, m)?;
+    if (1.0 / m).is_finite() {
+        Ok(())
+    } else {
+        bad(
+            key,
+            format!("{m:e} is too small: its inverse overflows"),
+            Some("masses from 1e-300 up work (and `inf` for an immovable particle)"),
+        )
+    }
+}
+
+/// 2D and 3D: the balls sharing each region must fit at the packing fraction
+/// the placement can reach (the smallest radii of a range counted, so only
+/// what is certainly impossible is refused here; the builder checks the
+/// radii it draws).
+fn balls_fit(s: &SceneSpec) -> Check {
+    let d = dimension(s);
+    let Some(size) = s.box_size.as_ref().filter(|_| d >= 2) else {
+        return Ok(());
+    };
+    let (limit, method, instead) = match s.placement {
+        None | Some(Placement::Random) => (
+            JAMMING[d - 2],
+            "random insertion jams at",
+            "use `placement = { kind = \"compress\" }` for dense fluids or `{ kind = \"lattice\" }` for crystals",
+        ),
+        Some(Placement::Compress { .. }) => (
+            compress::LIMIT[d - 2],
+            "compression reaches at most",
+            "use `placement = { kind = \"lattice\" }` for denser crystals",
+        ),
+        _ => return Ok(()),
+    };
+    // (region per axis, volume its balls fill, first species in it)
+    type Filled = (Vec<(f64, f64)>, f64, usize);
+    let mut regions: Vec<Filled> = Vec::new();
+    for (i, sp) in s.species.iter().enumerate() {
+        let region: Vec<(f64, f64)> = (0..d)
+            .map(|k| match &sp.region {
+                Some(r) => (r.from[k], r.to[k]),
+                None => (0.0, 1.0),
+            })
+            .collect();
+        let filled = ball_volume(d, sp.radius.bounds()[0]) * count(s, i) as f64;
+        match regions.iter_mut().find(|(r, _, _)| *r == region) {
+            Some((_, occupied, _)) => *occupied += filled,
+            None => regions.push((region, filled, i)),
+        }
+    }
+    for (region, filled, first) in regions {
+        let volume: f64 = region
+            .iter()
+            .zip(size)
+            .map(|((lo, hi), l)| (hi - lo) * l)
+            .product();
+        let phi = filled / volume;
+        if phi > limit {
+            let key = match s.piston.as_ref().and_then(|p| p.per_side) {
+                Some(_) => "scene.piston.per_side".to_string(),
+                None => format!("scene.species.{first}.count"),
+            };
+            return bad(
+                key,
+                format!(
+                    "the particles would fill packing fraction {phi:.4} of their region; \
+                     {method} {limit} in {d}D"
+                ),
+                Some(&format!(
+                    "{instead}, or use fewer or smaller particles or a larger box"
+                )),
+            );
+        }
     }
     Ok(())
 }
