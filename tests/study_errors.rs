@@ -69,6 +69,14 @@ fn run_section() {
             edit("sample_every = 0.5", "sample_every = 0.0"),
             &["s.toml:36:1: `run.sample_every`: must be a positive number"],
         ),
+        case(
+            "more samples than a run keeps",
+            edit("sample_every = 0.5", "sample_every = 1e-6"),
+            &[
+                "s.toml:36:1: `run.sample_every`: 0.000001 gives 1.0e8 samples over the duration 100; a run keeps at most 1e7",
+                "`sample_every = 0.001`",
+            ],
+        ),
     ]);
 }
 
@@ -401,6 +409,17 @@ fn observables_and_analyses() {
             &[
                 "s.toml:40:11: `observe.series.0`: unknown series observable `piston_postion`",
                 "did you mean `piston_position`?",
+            ],
+        ),
+        case(
+            "positions of every particle at too many samples",
+            edit(
+                "series = [\"piston_position\"]",
+                "series = [\"piston_position\", \"positions\"]",
+            )
+            .replace("sample_every = 0.5", "sample_every = 1e-5"),
+            &[
+                "s.toml:31:1: sweep parameter `scene.species.0.count`: value 15 makes `observe.series.1` invalid: `positions` would hold 1.5e8 values per run (every particle at every sample); a run keeps at most 1e8",
             ],
         ),
         case(

@@ -134,9 +134,28 @@ pub fn run(d: &Descriptor) -> Check {
     }
     if let Some(dt) = r.sample_every {
         positive("run.sample_every", dt)?;
+        // Analyses keep every sample of a run in memory.
+        if let Some(t) = r.duration
+            && t / dt > MAX_SAMPLES
+        {
+            return bad(
+                "run.sample_every",
+                format!(
+                    "{dt} gives {:.1e} samples over the duration {t}; a run keeps at most {MAX_SAMPLES:.0e}",
+                    t / dt
+                ),
+                Some(&format!(
+                    "sample less often, e.g. `sample_every = {}`",
+                    t / 1e5
+                )),
+            );
+        }
     }
     Ok(())
 }
+
+/// Samples one run may take: every one is kept in memory for the analyses.
+const MAX_SAMPLES: f64 = 1e7;
 
 /// The shape of `[sweep]`: values present, ranges sound, zip lengths equal.
 pub fn sweep(d: &Descriptor) -> Check {

@@ -37,9 +37,34 @@ pub fn observe(d: &Descriptor, scene: &SceneSpec) -> Check {
             for need in needs(kind, name) {
                 met(*need, d, scene, &key, &format!("`{name}`"))?;
             }
+            if (kind, name.as_str()) == ("series", "positions") {
+                positions_fit(d, scene, &key)?;
+            }
         }
     }
     Ok(())
+}
+
+/// Values a run's `positions` series may hold (8 bytes each, in memory).
+const MAX_POSITION_VALUES: f64 = 1e8;
+
+/// The `positions` series keeps one value per particle per sample.
+fn positions_fit(d: &Descriptor, scene: &SceneSpec, key: &str) -> Check {
+    let (Some(t), Some(dt)) = (d.run.duration, d.run.sample_every) else {
+        return Ok(());
+    };
+    let values = t / dt * super::validate_scene::particles(scene) as f64;
+    if values <= MAX_POSITION_VALUES {
+        return Ok(());
+    }
+    bad(
+        key,
+        format!(
+            "`positions` would hold {values:.1e} values per run (every particle at every sample); \
+             a run keeps at most {MAX_POSITION_VALUES:.0e}"
+        ),
+        Some("sample less often, run shorter, or use fewer particles"),
+    )
 }
 
 fn known(kind: &str, name: &str, key: &str) -> Check {
