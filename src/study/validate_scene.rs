@@ -53,8 +53,7 @@ pub fn scene(s: &SceneSpec) -> Check {
         axes("scene.boundary", b.len(), s)?;
     }
     species(s)?;
-    rods_fit(s)?;
-    balls_fit(s)?;
+    particles_fit(s)?;
     placement(s)?;
     velocities(s)?;
     piston(s)?;
@@ -358,36 +357,38 @@ fn mass(key: &str, m: f64) -> Check {
     }
 }
 
-/// 2D and 3D: the balls sharing each region must fit at the packing fraction
-/// the placement can reach (the smallest radii of a range counted, so only
+/// The particles sharing each region must fit in it: rods side by side in
+/// 1D (the builder lays them so), disks and spheres at the packing fraction
+/// the placement can reach. The smallest radius of a range counts, so only
 /// what is certainly impossible is refused here; the builder checks the
-/// radii it draws).
-fn balls_fit(s: &SceneSpec) -> Check {
+/// radii it draws.
+fn particles_fit(s: &SceneSpec) -> Check {
     let d = dimension(s);
-    let Some(size) = s.box_size.as_ref().filter(|_| d >= 2) else {
+    let Some(size) = &s.box_size else {
         return Ok(());
     };
-    let (limit, method, instead) = match s.placement {
-        None | Some(Placement::Random) => (
+    let (limit, instead) = match (d, &s.placement) {
+        (_, Some(Placement::Explicit { .. })) => return Ok(()),
+        (1, _) => (1.0, ""),
+        (_, None | Some(Placement::Random)) => (
             JAMMING[d - 2],
-            "random insertion jams at",
-            "use `placement = { kind = \"compress\" }` for dense fluids or `{ kind = \"lattice\" }` for crystals",
+            "use `placement = { kind = \"compress\" }` for dense fluids or `{ kind = \"lattice\" }` for crystals, or ",
         ),
-        Some(Placement::Compress { .. }) => (
+        (_, Some(Placement::Compress { .. })) => (
             compress::LIMIT[d - 2],
-            "compression reaches at most",
-            "use `placement = { kind = \"lattice\" }` for denser crystals",
+            "use `placement = { kind = \"lattice\" }` for denser crystals, or ",
         ),
         _ => return Ok(()),
     };
-    // (region per axis, volume its balls fill, first species in it)
+    // (region per axis, volume its particles fill, first species in it)
     type Filled = (Vec<(f64, f64)>, f64, usize);
     let mut regions: Vec<Filled> = Vec::new();
     for (i, sp) in s.species.iter().enumerate() {
         let region: Vec<(f64, f64)> = (0..d)
-            .map(|k| match &sp.region {
-                Some(r) => (r.from[k], r.to[k]),
-                None => (0.0, 1.0),
+            .map(|k| {
+                sp.region
+                    .as_ref()
+                    .map_or((0.0, 1.0), |r| (r.from[k], r.to[k]))
             })
             .collect();
         let filled = ball_volume(d, sp.radius.bounds()[0]) * count(s, i) as f64;
@@ -402,23 +403,35 @@ fn balls_fit(s: &SceneSpec) -> Check {
             .zip(size)
             .map(|((lo, hi), l)| (hi - lo) * l)
             .product();
-        let phi = filled / volume;
-        if phi > limit {
-            let key = match s.piston.as_ref().and_then(|p| p.per_side) {
-                Some(_) => "scene.piston.per_side".to_string(),
-                None => format!("scene.species.{first}.count"),
-            };
-            return bad(
-                key,
-                format!(
-                    "the particles would fill packing fraction {phi:.4} of their region; \
-                     {method} {limit} in {d}D"
-                ),
-                Some(&format!(
-                    "{instead}, or use fewer or smaller particles or a larger box"
-                )),
-            );
+        if filled <= limit * volume {
+            continue;
         }
+        let key = match s.piston.as_ref().and_then(|p| p.per_side) {
+            Some(_) => "scene.piston.per_side".to_string(),
+            None => format!("scene.species.{first}.count"),
+        };
+        let message = match (d, &s.placement) {
+            (1, _) => format!(
+                "rods of total length {filled} do not fit in their region of length {volume}"
+            ),
+            (_, Some(Placement::Compress { .. })) => format!(
+                "the particles would fill packing fraction {:.4} of their region; compression \
+                 reaches at most {limit} in {d}D",
+                filled / volume
+            ),
+            _ => format!(
+                "the particles would fill packing fraction {:.4} of their region; random \
+                 insertion jams at {limit} in {d}D",
+                filled / volume
+            ),
+        };
+        return bad(
+            key,
+            message,
+            Some(&format!(
+                "{instead}use fewer or smaller particles, or a larger box or region"
+            )),
+        );
     }
     Ok(())
 }
@@ -429,41 +442,6 @@ fn region_x(sp: &SpeciesSpec) -> (f64, f64) {
         .as_ref()
         .and_then(|r| Some((*r.from.first()?, *r.to.first()?)))
         .unwrap_or((0.0, 1.0))
-}
-
-/// 1D: the rods of each region must fit in it (the builder lays the rods of
-/// species sharing a region side by side).
-fn rods_fit(s: &SceneSpec) -> Check {
-    let explicit = matches!(s.placement, Some(Placement::Explicit { .. }));
-    let (Some(size), 1, false) = (&s.box_size, dimension(s), explicit) else {
-        return Ok(());
-    };
-    let mut regions: Vec<((f64, f64), f64, usize)> = Vec::new();
-    for (i, sp) in s.species.iter().enumerate() {
-        let region = region_x(sp);
-        let length = 2.0 * sp.radius.bounds()[0] * count(s, i) as f64;
-        match regions.iter_mut().find(|(r, _, _)| *r == region) {
-            Some((_, occupied, _)) => *occupied += length,
-            None => regions.push((region, length, i)),
-        }
-    }
-    for ((lo, hi), occupied, first) in regions {
-        let room = (hi - lo) * size[0];
-        if occupied > room {
-            let key = match s.piston.as_ref().and_then(|p| p.per_side) {
-                Some(_) => "scene.piston.per_side".to_string(),
-                None => format!("scene.species.{first}.count"),
-            };
-            return bad(
-                key,
-                format!(
-                    "rods of total length {occupied} do not fit in their region of length {room}"
-                ),
-                Some("use fewer or smaller particles, or a larger box or region"),
-            );
-        }
-    }
-    Ok(())
 }
 
 fn thermal_walls(s: &SceneSpec) -> Check {
