@@ -367,15 +367,18 @@ fn particles_fit(s: &SceneSpec) -> Check {
     let Some(size) = &s.box_size else {
         return Ok(());
     };
-    let (limit, instead) = match (d, &s.placement) {
+    // The densest the placement reaches, what it is called, what else to use.
+    let (limit, method, instead) = match (d, &s.placement) {
         (_, Some(Placement::Explicit { .. })) => return Ok(()),
-        (1, _) => (1.0, ""),
+        (1, _) => (1.0, "", ""),
         (_, None | Some(Placement::Random)) => (
             JAMMING[d - 2],
+            "random insertion jams at",
             "use `placement = { kind = \"compress\" }` for dense fluids or `{ kind = \"lattice\" }` for crystals, or ",
         ),
         (_, Some(Placement::Compress { .. })) => (
             compress::LIMIT[d - 2],
+            "compression reaches at most",
             "use `placement = { kind = \"lattice\" }` for denser crystals, or ",
         ),
         _ => return Ok(()),
@@ -410,20 +413,14 @@ fn particles_fit(s: &SceneSpec) -> Check {
             Some(_) => "scene.piston.per_side".to_string(),
             None => format!("scene.species.{first}.count"),
         };
-        let message = match (d, &s.placement) {
-            (1, _) => format!(
-                "rods of total length {filled} do not fit in their region of length {volume}"
-            ),
-            (_, Some(Placement::Compress { .. })) => format!(
-                "the particles would fill packing fraction {:.4} of their region; compression \
-                 reaches at most {limit} in {d}D",
+        let message = if d == 1 {
+            format!("rods of total length {filled} do not fit in their region of length {volume}")
+        } else {
+            format!(
+                "the particles would fill packing fraction {:.4} of their region; {method} \
+                 {limit} in {d}D",
                 filled / volume
-            ),
-            _ => format!(
-                "the particles would fill packing fraction {:.4} of their region; random \
-                 insertion jams at {limit} in {d}D",
-                filled / volume
-            ),
+            )
         };
         return bad(
             key,
