@@ -1,6 +1,9 @@
-//! `study`: a thin binary over `bonkers::study::cli`.
+//! `study`: a thin binary over `bonkers::cli`.
 
 fn main() {
-    let code = bonkers::study::cli::main(std::env::args_os().collect(), &bonkers::simulate::run);
+    let code = bonkers::cli::main(
+        std::env::args_os().collect(),
+        &bonkers::runner::simulate::run,
+    );
     std::process::exit(code);
 }

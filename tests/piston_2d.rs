@@ -5,7 +5,7 @@
 
 mod piston_common;
 
-use bonkers::analysis::summary::Stats;
+use bonkers::stats::summary::Stats;
 use bonkers::theory::piston_equilibrium::degrees_of_freedom;
 use piston_common::{
     assert_equipartition, assert_not_one, assert_one, ensemble, geometry, measure_with, result,
@@ -66,7 +66,7 @@ fn heavy_wall_oscillates_at_the_two_dimensional_adiabatic_frequency() {
         .iter()
         .map(|r| r.0)
         .collect();
-    assert_eq!(names, bonkers::analysis::piston::RESULTS);
+    assert_eq!(names, bonkers::studies::piston::RESULTS);
     let adiabatic = stats(&runs, scalar("frequency_ratio"));
     assert_eq!(adiabatic.n, 10, "every run measured a frequency");
     assert_one(&adiabatic, "omega/omega_adiabatic");

@@ -3,9 +3,9 @@
 
 mod piston_common;
 
-use bonkers::analysis::summary::Stats;
-use bonkers::study::output::RunOutput;
-use bonkers::study::plan_types::RunSpec;
+use bonkers::model::run_output::RunOutput;
+use bonkers::model::run_spec::RunSpec;
+use bonkers::stats::summary::Stats;
 use piston_common::{
     assert_equipartition, ensemble, geometry, measure_with, result, scalar, stats,
 };

@@ -1,7 +1,7 @@
 //! The bundled quickstart, end to end through the `study` binary: it runs,
 //! writes every output, and its tables read back.
 
-use bonkers::study::store::read_parquet;
+use bonkers::runner::store::read_parquet;
 use std::process::Command;
 
 #[test]

@@ -1,9 +1,9 @@
 //! Ensemble statistics on synthetic runs with known answers.
 
-use bonkers::analysis::summary::summarize;
-use bonkers::study::descriptor_types::Descriptor;
-use bonkers::study::output::RunOutput;
-use bonkers::study::plan_types::RunSpec;
+use bonkers::model::descriptor::Descriptor;
+use bonkers::model::run_output::RunOutput;
+use bonkers::model::run_spec::RunSpec;
+use bonkers::stats::summary::summarize;
 
 fn descriptor() -> Descriptor {
     toml::from_str(

@@ -2,12 +2,12 @@
 //! well-formed SVG, and no panics on NaN, failures or degenerate data.
 //! Set BONKERS_KEEP_REPORT=<dir> to keep the full demo report for viewing.
 
-use bonkers::analysis::ReportSection;
-use bonkers::analysis::summary::summarize;
+use bonkers::model::descriptor::Descriptor;
+use bonkers::model::report::ReportSection;
+use bonkers::model::run_output::{Histogram, RunOutput, Series};
+use bonkers::model::run_spec::RunSpec;
 use bonkers::report::{ReportMeta, write};
-use bonkers::study::descriptor_types::Descriptor;
-use bonkers::study::output::{Histogram, RunOutput, Series};
-use bonkers::study::plan_types::RunSpec;
+use bonkers::stats::summary::summarize;
 use std::path::Path;
 
 const SWEPT: &str = "[study]\nname = \"piston <demo> & co\"\ndescription = \"Synthetic piston study.\"\n\
@@ -121,9 +121,7 @@ fn meta(failed: Vec<(u64, String)>) -> ReportMeta {
     }
 }
 
-fn summary_with_theory(
-    runs: &[(RunSpec, RunOutput)],
-) -> Vec<bonkers::analysis::summary_types::SummaryRow> {
+fn summary_with_theory(runs: &[(RunSpec, RunOutput)]) -> Vec<bonkers::model::summary::SummaryRow> {
     let mut rows = summarize(runs, &|_: &Descriptor, _: &str| None);
     for r in &mut rows {
         r.theory = theory(&r.result, &r.params);

@@ -2,7 +2,7 @@
 //! for impossible requests.
 
 use bonkers::engine::{Chain, NeighbourList, Observer, Simulation, Stop, WallHit};
-use bonkers::scene::spec::SceneSpec;
+use bonkers::model::scene::SceneSpec;
 use bonkers::scene::{Built, build, presets, resolve};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;

@@ -7,7 +7,7 @@
 //! find (it says so: see `compression_that_jams_says_so`).
 
 use bonkers::engine::{Disks, Particle, SimBox, Spheres};
-use bonkers::scene::spec::SceneSpec;
+use bonkers::model::scene::SceneSpec;
 use bonkers::scene::{Built, build, resolve};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;

@@ -1,7 +1,7 @@
 //! Every request a scene cannot honour is a clear error saying what was
 //! wrong and what would be right — never a panic, never a silent fix.
 
-use bonkers::scene::spec::SceneSpec;
+use bonkers::model::scene::SceneSpec;
 use bonkers::scene::{build, resolve};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;

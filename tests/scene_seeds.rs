@@ -3,7 +3,7 @@
 mod scene_stats;
 
 use bonkers::engine::{Disks, Observer, Rods, Snapshot, Stop};
-use bonkers::scene::spec::SceneSpec;
+use bonkers::model::scene::SceneSpec;
 use bonkers::scene::{Built, build, resolve};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;

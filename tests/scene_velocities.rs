@@ -4,7 +4,7 @@
 
 mod scene_stats;
 
-use bonkers::scene::spec::SceneSpec;
+use bonkers::model::scene::SceneSpec;
 use bonkers::scene::{Built, build, resolve};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;

@@ -3,7 +3,7 @@
 
 mod study_common;
 
-use bonkers::study::descriptor::{
+use bonkers::descriptor::load::{
     apply_overrides, edit_distance, parse, quick, with_overrides, with_replicas,
 };
 use proptest::prelude::*;
@@ -243,7 +243,7 @@ fn override_errors_name_their_origin() {
 #[test]
 fn missing_file_is_an_input_error() {
     let err =
-        bonkers::study::descriptor::load(std::path::Path::new("/nonexistent/x.toml")).unwrap_err();
+        bonkers::descriptor::load::load(std::path::Path::new("/nonexistent/x.toml")).unwrap_err();
     assert_has(
         &err.to_string(),
         &[
@@ -298,9 +298,9 @@ proptest! {
             text = mutate(&text, pos, kind, byte);
         }
         if let Ok(loaded) = parse("p.toml", &text) {
-            let _ = bonkers::study::plan::count(&loaded);
-            if bonkers::study::plan::count(&loaded).1 < 10_000 {
-                let _ = bonkers::study::plan::plan(&loaded);
+            let _ = bonkers::runner::plan::count(&loaded);
+            if bonkers::runner::plan::count(&loaded).1 < 10_000 {
+                let _ = bonkers::runner::plan::plan(&loaded);
             }
             let _ = quick(&loaded);
         }

@@ -2,12 +2,12 @@
 //! every name it uses and runs end to end (its `--quick` version), and its
 //! catalogue lists every observable and analysis option bonkers knows.
 
-use bonkers::study::analyses::ANALYSES;
-use bonkers::study::descriptor::{parse, quick};
-use bonkers::study::pipeline::{StudyOptions, run_study};
-use bonkers::study::plan::count;
-use bonkers::study::progress::ProgressMode;
-use bonkers::study::store::read_parquet;
+use bonkers::descriptor::load::{parse, quick};
+use bonkers::runner::pipeline::{StudyOptions, run_study};
+use bonkers::runner::plan::count;
+use bonkers::runner::progress::ProgressMode;
+use bonkers::runner::store::read_parquet;
+use bonkers::studies::REGISTRY;
 use std::sync::atomic::AtomicBool;
 
 fn doc() -> String {
@@ -60,7 +60,7 @@ fn the_documented_example_runs() {
     let outcome = run_study(
         &file,
         &options,
-        &bonkers::simulate::run,
+        &bonkers::runner::simulate::run,
         &AtomicBool::new(false),
     )
     .unwrap();
@@ -99,9 +99,9 @@ fn every_observable_and_analysis_option_is_documented() {
         let row = format!("| `{kind}` | `{name}` |");
         assert!(doc.contains(&row), "docs/descriptor.md lacks the row {row}");
     }
-    for a in ANALYSES {
-        for o in a.options {
-            let row = format!("| `{}` | `{}` |", a.name, o.name);
+    for a in REGISTRY {
+        for o in a.options() {
+            let row = format!("| `{}` | `{}` |", a.name(), o.name);
             assert!(doc.contains(&row), "docs/descriptor.md lacks the row {row}");
         }
     }

@@ -4,8 +4,8 @@
 
 mod study_common;
 
-use bonkers::study::descriptor::parse;
-use bonkers::study::plan::plan;
+use bonkers::descriptor::load::parse;
+use bonkers::runner::plan::plan;
 use study_common::PISTON;
 
 /// One edit of PISTON and what its error must say.

@@ -2,9 +2,9 @@
 
 mod study_common;
 
-use bonkers::study::descriptor::{apply_overrides, parse};
-use bonkers::study::plan::{count, expand_values, plan};
-use bonkers::study::seeds::run_seed;
+use bonkers::descriptor::load::{apply_overrides, parse};
+use bonkers::runner::plan::{count, expand_values, plan};
+use bonkers::runner::seeds::run_seed;
 use std::collections::HashSet;
 use study_common::PISTON;
 
@@ -137,7 +137,7 @@ fn overrides_create_tables_and_index_arrays() {
 
 #[test]
 fn quick_and_replicas_overrides() {
-    use bonkers::study::descriptor::{quick, with_replicas};
+    use bonkers::descriptor::load::{quick, with_replicas};
     let loaded = parse("p.toml", PISTON).unwrap();
     let q = quick(&loaded).unwrap();
     assert_eq!(q.descriptor.study.replicas, 1);

@@ -3,13 +3,13 @@
 
 mod study_common;
 
-use bonkers::study::descriptor::parse;
-use bonkers::study::errors::StudyError;
-use bonkers::study::pipeline::{StudyOptions, run_study};
-use bonkers::study::plan::plan;
-use bonkers::study::progress::ProgressMode;
-use bonkers::study::runner::run_file;
-use bonkers::study::store::read_parquet;
+use bonkers::descriptor::errors::StudyError;
+use bonkers::descriptor::load::parse;
+use bonkers::runner::pipeline::{StudyOptions, run_study};
+use bonkers::runner::plan::plan;
+use bonkers::runner::progress::ProgressMode;
+use bonkers::runner::run::run_file;
+use bonkers::runner::store::read_parquet;
 use polars::prelude::DataFrame;
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
@@ -24,8 +24,8 @@ impl Counting {
     }
     fn simulate(
         &self,
-        spec: &bonkers::study::plan_types::RunSpec,
-    ) -> anyhow::Result<bonkers::study::output::RunOutput> {
+        spec: &bonkers::model::run_spec::RunSpec,
+    ) -> anyhow::Result<bonkers::model::run_output::RunOutput> {
         self.0.fetch_add(1, Ordering::SeqCst);
         fake(spec)
     }
@@ -254,7 +254,7 @@ fn failing_and_panicking_runs_are_recorded_and_the_rest_go_on() {
     let dir = tempfile::tempdir().unwrap();
     let file = write_descriptor(dir.path(), PISTON);
     let out = dir.path().join("out");
-    let flaky = |s: &bonkers::study::plan_types::RunSpec| match s.run_id {
+    let flaky = |s: &bonkers::model::run_spec::RunSpec| match s.run_id {
         3 => anyhow::bail!("overlap at start"),
         5 => panic!("engine bug"),
         _ => fake(s),
@@ -279,8 +279,8 @@ fn failing_and_panicking_runs_are_recorded_and_the_rest_go_on() {
 
 #[test]
 fn nan_and_infinite_results_survive_the_run_files() {
-    use bonkers::study::output::RunOutput;
-    use bonkers::study::record::RunRecord;
+    use bonkers::model::run_output::RunOutput;
+    use bonkers::runner::record::RunRecord;
     let record = RunRecord {
         run_id: 1,
         fingerprint: "x".into(),
@@ -360,7 +360,7 @@ fn outputs_of_an_earlier_study_do_not_survive_a_new_one() {
     ] {
         assert!(out.join(f).is_file(), "{f}");
     }
-    let scalars_only = |s: &bonkers::study::plan_types::RunSpec| {
+    let scalars_only = |s: &bonkers::model::run_spec::RunSpec| {
         let mut o = fake(s)?;
         o.series.clear();
         o.histograms.clear();
@@ -398,7 +398,7 @@ fn a_second_study_on_the_same_out_dir_fails_clearly() {
     let file = write_descriptor(dir.path(), PISTON);
     let out = dir.path().join("out");
     std::fs::create_dir_all(&out).unwrap();
-    let held = bonkers::study::lock::OutLock::acquire(&out).unwrap();
+    let held = bonkers::runner::lock::OutLock::acquire(&out).unwrap();
     let err = run_study(&file, &options(&out, 2), &fake, &AtomicBool::new(false)).unwrap_err();
     assert_eq!(err.exit_code(), 1);
     let msg = err.to_string();
@@ -441,7 +441,7 @@ fn leftovers_of_a_killed_run_are_cleaned() {
 
 #[test]
 fn quick_studies_default_to_their_own_out_dir() {
-    use bonkers::study::pipeline::default_out_dir;
+    use bonkers::runner::pipeline::default_out_dir;
     let loaded = parse("s.toml", PISTON).unwrap();
     assert_eq!(
         default_out_dir(&loaded, false),

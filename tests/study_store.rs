@@ -1,6 +1,6 @@
 //! Parquet round trip of the study tables, including nulls and text columns.
 
-use bonkers::study::store::{read_parquet, write_parquet};
+use bonkers::runner::store::{read_parquet, write_parquet};
 use polars::prelude::{Column, DataFrame};
 
 #[test]
@@ -39,16 +39,16 @@ fn parquet_round_trip_keeps_types_values_and_nulls() {
 /// every time, instead of failing the table after every run has finished.
 #[test]
 fn clashing_result_names_get_distinct_deterministic_columns() {
-    use bonkers::study::output::RunOutput;
-    use bonkers::study::record::RunRecord;
-    use bonkers::study::store::write_tables;
+    use bonkers::model::run_output::RunOutput;
+    use bonkers::runner::record::RunRecord;
+    use bonkers::runner::store::write_tables;
     let text = std::fs::read_to_string(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/studies/quickstart.toml"
     ))
     .unwrap();
     let specs =
-        bonkers::study::plan::plan(&bonkers::study::descriptor::parse("q.toml", &text).unwrap())
+        bonkers::runner::plan::plan(&bonkers::descriptor::load::parse("q.toml", &text).unwrap())
             .unwrap();
     let runs: Vec<_> = specs
         .into_iter()

@@ -1,9 +1,9 @@
 //! The `wall_heat` observable on the real engine: a hard wall exchanges no
 //! energy, and a hot thermal wall heats a cold gas.
 
-use bonkers::analysis::summary::Stats;
-use bonkers::study::descriptor::parse;
-use bonkers::study::plan::plan;
+use bonkers::descriptor::load::parse;
+use bonkers::runner::plan::plan;
+use bonkers::stats::summary::Stats;
 
 const COLD_GAS_HOT_WALL: &str = r#"
 [study]
@@ -31,7 +31,7 @@ fn a_hot_wall_heats_a_cold_gas_and_hard_walls_do_not() {
     let runs = plan(&parse("heat.toml", COLD_GAS_HOT_WALL).unwrap()).unwrap();
     let outputs: Vec<_> = runs
         .iter()
-        .map(|r| bonkers::simulate::run(r).unwrap())
+        .map(|r| bonkers::runner::simulate::run(r).unwrap())
         .collect();
     for o in &outputs {
         // Elastic walls: exactly no energy, every hit.

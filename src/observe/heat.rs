@@ -3,7 +3,7 @@
 
 use super::{Context, Measure};
 use crate::engine::{Observer, WallHit};
-use crate::study::output::RunOutput;
+use crate::model::run_output::RunOutput;
 
 pub struct WallHeat<const D: usize> {
     /// Energy in from [axis][low, high].

@@ -3,7 +3,7 @@
 
 use super::{Context, Measure};
 use crate::engine::{Observer, Snapshot};
-use crate::study::output::{Histogram, RunOutput};
+use crate::model::run_output::{Histogram, RunOutput};
 
 const BINS: usize = 60;
 const HALF_WIDTH: f64 = 6.0;

@@ -9,7 +9,7 @@ mod sampled;
 mod sides;
 
 use crate::engine::{Observer, PairCollision, Snapshot, WallHit};
-use crate::study::output::RunOutput;
+use crate::model::run_output::RunOutput;
 
 pub use heat::WallHeat;
 pub use histogram::ScaledVelocity;

@@ -2,7 +2,7 @@
 
 use super::{Context, Measure};
 use crate::engine::{Observer, PairCollision, Snapshot, WallHit};
-use crate::study::output::RunOutput;
+use crate::model::run_output::RunOutput;
 
 /// Force per unit area on the walls, time-averaged: the impulse the walls
 /// receive divided by (time x wall area).

@@ -2,7 +2,7 @@
 
 use super::{Context, Measure};
 use crate::engine::{Observer, Snapshot, degrees_of_freedom};
-use crate::study::output::{RunOutput, Series};
+use crate::model::run_output::{RunOutput, Series};
 
 /// Records the named sampled observables; a name "mean:<x>" keeps only the
 /// time average of <x>, as a scalar.

@@ -4,7 +4,7 @@
 
 use super::{Context, Measure};
 use crate::engine::{Observer, Snapshot};
-use crate::study::output::{RunOutput, Series};
+use crate::model::run_output::{RunOutput, Series};
 
 pub struct SideEnergies {
     piston: Option<usize>,

@@ -2,7 +2,7 @@
 //! to draw as plain data (`ChartSpec`); only this file talks to plotters, so
 //! ranges, log axes, NaN gaps and empty data are handled once.
 
-use super::format::num;
+use crate::stats::format::num;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
 use std::ops::Range;
@@ -12,98 +12,12 @@ pub const HEIGHT: u32 = 520;
 /// Longest polyline drawn; longer series are thinned so SVGs stay small.
 const MAX_POINTS: usize = 1500;
 
-/// What to draw in one chart.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct ChartSpec {
-    pub title: String,
-    pub x_label: String,
-    pub y_label: String,
-    pub x_log: bool,
-    pub y_log: bool,
-    pub layers: Vec<Layer>,
-}
+pub use crate::model::chart::{ChartSpec, Layer, Paint};
 
-/// A colour with opacity (light traces and bands are translucent).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Paint {
-    pub rgb: (u8, u8, u8),
-    pub alpha: f64,
-}
-
-impl Paint {
-    pub fn solid(rgb: (u8, u8, u8)) -> Paint {
-        Paint { rgb, alpha: 1.0 }
-    }
-    pub fn faded(self, alpha: f64) -> Paint {
-        Paint { alpha, ..self }
-    }
-    fn style(self, width: u32) -> ShapeStyle {
-        let (r, g, b) = self.rgb;
-        RGBColor(r, g, b).mix(self.alpha).stroke_width(width)
-    }
-}
-
-#[derive(Debug, Clone, PartialEq)]
-pub enum Layer {
-    /// A polyline; non-finite points break it into pieces.
-    Line {
-        points: Vec<(f64, f64)>,
-        paint: Paint,
-        width: u32,
-        dashed: bool,
-        label: Option<String>,
-    },
-    /// Filled region between `lower` and `upper` sampled at the same `x`.
-    Band {
-        x: Vec<f64>,
-        lower: Vec<f64>,
-        upper: Vec<f64>,
-        paint: Paint,
-    },
-    /// Vertical error bars: (x, low, centre, high).
-    ErrorBars {
-        bars: Vec<(f64, f64, f64, f64)>,
-        paint: Paint,
-    },
-    /// Filled circles.
-    Markers {
-        points: Vec<(f64, f64)>,
-        paint: Paint,
-        label: Option<String>,
-    },
-}
-
-impl ChartSpec {
-    /// All finite points the axes must show (on log axes only positive ones).
-    fn extent_points(&self) -> Vec<(f64, f64)> {
-        let mut pts = Vec::new();
-        for layer in &self.layers {
-            match layer {
-                Layer::Line { points, .. } | Layer::Markers { points, .. } => {
-                    pts.extend(points.iter().copied())
-                }
-                Layer::Band {
-                    x, lower, upper, ..
-                } => {
-                    for ((x, lo), hi) in x.iter().zip(lower).zip(upper) {
-                        pts.push((*x, *lo));
-                        pts.push((*x, *hi));
-                    }
-                }
-                Layer::ErrorBars { bars, .. } => {
-                    for (x, lo, c, hi) in bars {
-                        pts.extend([(*x, *lo), (*x, *c), (*x, *hi)]);
-                    }
-                }
-            }
-        }
-        pts.retain(|&(x, y)| self.visible(x, y));
-        pts
-    }
-
-    fn visible(&self, x: f64, y: f64) -> bool {
-        x.is_finite() && y.is_finite() && (!self.x_log || x > 0.0) && (!self.y_log || y > 0.0)
-    }
+/// The plotters style of a paint at a stroke width.
+fn style(paint: Paint, width: u32) -> ShapeStyle {
+    let (r, g, b) = paint.rgb;
+    RGBColor(r, g, b).mix(paint.alpha).stroke_width(width)
 }
 
 /// The chart as an SVG document. Never fails: without drawable data (or if
@@ -265,7 +179,7 @@ where
             dashed,
             label,
         } => {
-            let style = paint.style(*width);
+            let style = style(*paint, *width);
             for (i, piece) in pieces(points, &keep).into_iter().enumerate() {
                 let anno = if *dashed {
                     chart.draw_series(DashedLineSeries::new(piece, 8, 5, style))
@@ -291,7 +205,7 @@ where
             upper,
             paint,
         } => {
-            let fill = paint.style(1).filled();
+            let fill = style(*paint, 1).filled();
             let lo: Vec<(f64, f64)> = x.iter().copied().zip(lower.iter().copied()).collect();
             let hi: Vec<(f64, f64)> = x.iter().copied().zip(upper.iter().copied()).collect();
             let both = |i: &usize| keep(&lo[*i]) && keep(&hi[*i]);
@@ -306,7 +220,7 @@ where
             Ok(false)
         }
         Layer::ErrorBars { bars, paint } => {
-            let style = paint.style(1);
+            let style = style(*paint, 1);
             let ok = bars
                 .iter()
                 .filter(|(x, lo, c, hi)| keep(&(*x, *lo)) && keep(&(*x, *c)) && keep(&(*x, *hi)));
@@ -322,7 +236,7 @@ where
             paint,
             label,
         } => {
-            let style = paint.style(1).filled();
+            let style = style(*paint, 1).filled();
             let anno = chart
                 .draw_series(
                     points

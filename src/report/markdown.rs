@@ -3,13 +3,13 @@
 //! `html.rs` renders this same text, so the two never disagree.
 
 use super::ReportMeta;
-use super::format::{count, num, pm};
 use super::plots::{Figure, Points, point_label, value_text};
-use crate::analysis::ReportSection;
-use crate::analysis::summary_types::SummaryRow;
-use crate::study::descriptor_types::{Descriptor, SweepValues};
-use crate::study::output::RunOutput;
-use crate::study::plan_types::RunSpec;
+use crate::model::descriptor::{Descriptor, SweepValues};
+use crate::model::report::ReportSection;
+use crate::model::run_output::RunOutput;
+use crate::model::run_spec::RunSpec;
+use crate::model::summary::SummaryRow;
+use crate::stats::format::{count, num, pm};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
@@ -39,9 +39,6 @@ pub fn render(inp: &Inputs) -> String {
             one_line(&s.title),
             s.markdown.trim_end()
         );
-        for (file, caption) in &s.figures {
-            let _ = writeln!(md, "![{}]({})\n", one_line(caption), file);
-        }
     }
     theory_table(&mut md, inp);
     plots(&mut md, inp.figures);

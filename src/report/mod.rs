@@ -4,7 +4,6 @@
 //! renders that same text with the SVGs inlined, so the two never disagree.
 
 pub mod chart;
-pub mod format;
 pub mod html;
 pub mod labels;
 pub mod markdown;
@@ -15,12 +14,12 @@ pub mod plots;
 
 pub use labels::axis_label;
 
-use crate::analysis::ReportSection;
-use crate::analysis::summary_types::SummaryRow;
-use crate::study::descriptor_types::Descriptor;
-use crate::study::output::RunOutput;
-use crate::study::plan_types::RunSpec;
-use crate::study::store::write_atomic;
+use crate::files::write_atomic;
+use crate::model::descriptor::Descriptor;
+use crate::model::report::ReportSection;
+use crate::model::run_output::RunOutput;
+use crate::model::run_spec::RunSpec;
+use crate::model::summary::SummaryRow;
 use anyhow::Context;
 use std::path::Path;
 
@@ -45,8 +44,8 @@ pub struct ReportMeta {
 }
 
 /// Write the generic plots, `report.md` and `index.html` into `out_dir`
-/// (created if missing). `sections` come after the generic parts, in order;
-/// their figures must already be in `out_dir`.
+/// (created if missing), and the figures of the studies' `sections`, which
+/// come first, in order.
 pub fn write(
     out_dir: &Path,
     descriptor: &Descriptor,
@@ -57,7 +56,12 @@ pub fn write(
 ) -> anyhow::Result<()> {
     std::fs::create_dir_all(out_dir)
         .with_context(|| format!("creating report folder {}", out_dir.display()))?;
-    let figures = plots::write_all(out_dir, descriptor, runs, summary)?;
+    for figure in sections.iter().flat_map(|s| &s.figures) {
+        let svg = chart::render(&figure.chart);
+        write_atomic(&out_dir.join(&figure.file), svg.as_bytes())?;
+    }
+    let presented: Vec<String> = sections.iter().flat_map(|s| s.presents.clone()).collect();
+    let figures = plots::write_all(out_dir, &presented, runs, summary)?;
     let points = plots::points(runs);
     let md = markdown::render(&markdown::Inputs {
         descriptor,

@@ -5,7 +5,7 @@
 use super::chart::{ChartSpec, Layer, Paint};
 use super::labels::{axis_label, short_name};
 use super::plots::{Points, colour, point_label, wants_log};
-use crate::analysis::summary_types::SummaryRow;
+use crate::model::summary::SummaryRow;
 use std::collections::{BTreeMap, BTreeSet};
 
 const THEORY: Paint = Paint {

@@ -4,8 +4,8 @@
 use super::chart::{ChartSpec, Layer};
 use super::labels::axis_label;
 use super::plots::{Points, colour, evenly, point_label};
-use crate::study::output::{RunOutput, Series};
-use crate::study::plan_types::RunSpec;
+use crate::model::run_output::{RunOutput, Series};
+use crate::model::run_spec::RunSpec;
 use std::collections::BTreeSet;
 
 const MAX_POINTS: usize = 6;

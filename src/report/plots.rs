@@ -5,11 +5,10 @@
 use super::chart::{self, ChartSpec, Paint};
 use super::labels::{short_name, slug};
 use super::{plot_hist, plot_scalars, plot_series};
-use crate::analysis::{self, summary_types::SummaryRow};
-use crate::study::descriptor_types::Descriptor;
-use crate::study::output::RunOutput;
-use crate::study::plan_types::RunSpec;
-use crate::study::store::write_atomic;
+use crate::files::write_atomic;
+use crate::model::run_output::RunOutput;
+use crate::model::run_spec::RunSpec;
+use crate::model::summary::SummaryRow;
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -38,7 +37,7 @@ pub fn points(runs: &[(RunSpec, RunOutput)]) -> Points {
 /// does `energy_drift` (the report gives its largest value in a line).
 pub fn write_all(
     out_dir: &Path,
-    descriptor: &Descriptor,
+    presented: &[String],
     runs: &[(RunSpec, RunOutput)],
     summary: &[SummaryRow],
 ) -> anyhow::Result<Vec<Figure>> {
@@ -47,7 +46,7 @@ pub fn write_all(
     let mut files = FileNames::default();
     let generic: Vec<SummaryRow> = summary
         .iter()
-        .filter(|r| r.result != "energy_drift" && !analysis::presents(descriptor, &r.result))
+        .filter(|r| r.result != "energy_drift" && !presented.contains(&r.result))
         .cloned()
         .collect();
     for (name, spec) in plot_scalars::charts(&generic, &points) {
@@ -125,7 +124,7 @@ pub fn point_label(params: &[(String, toml::Value)]) -> String {
 pub fn value_text(v: &toml::Value) -> String {
     match v {
         toml::Value::String(s) => s.clone(),
-        toml::Value::Float(f) => super::format::num(*f),
+        toml::Value::Float(f) => crate::stats::format::num(*f),
         other => other.to_string(),
     }
 }

@@ -4,11 +4,11 @@
 
 use super::compress::{self, Preparation, Settings};
 use super::space::{Slot, Space};
-use super::spec::{
-    Boundary, CompressFrom, Drawn, Placement, SceneSpec, Side, SpeciesSpec, Velocities,
-};
 use super::{lattice, piston, placement, rods, velocities};
 use crate::engine::{Axis, Particle, SimBox, Wall};
+use crate::model::scene::{
+    Boundary, CompressFrom, Drawn, Placement, SceneSpec, Side, SpeciesSpec, Velocities,
+};
 use rand::RngExt;
 use rand_chacha::ChaCha8Rng;
 

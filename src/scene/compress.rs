@@ -19,9 +19,9 @@
 use super::lattice;
 use super::placement;
 use super::space::{CellList, Slot, Space, ball_volume, region_volume};
-use super::spec::CompressFrom;
 use crate::engine::queue::EventQueue;
 use crate::engine::thermal::gaussian;
+use crate::model::scene::CompressFrom;
 use rand_chacha::ChaCha8Rng;
 use std::time::Instant;
 

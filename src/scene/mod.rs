@@ -9,7 +9,6 @@ pub mod presets;
 pub mod resolve;
 pub mod rods;
 pub mod space;
-pub mod spec;
 pub mod velocities;
 
 pub use build::{Built, build};

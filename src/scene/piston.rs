@@ -1,7 +1,7 @@
 //! The 1D piston: a particle of its own mass, size and starting velocity.
 
-use super::spec::{PistonSpec, Velocities};
 use super::velocities;
+use crate::model::scene::{PistonSpec, Velocities};
 use rand_chacha::ChaCha8Rng;
 
 /// Where the piston sits on a line of `length`: its extent [x - R, x + R].

@@ -2,7 +2,7 @@
 //! `[scene]`, see `study list`). Each is plain descriptor TOML, so a preset is
 //! exactly what a user could have written.
 
-use super::spec::SceneSpec;
+use crate::model::scene::SceneSpec;
 
 pub struct Preset {
     pub name: &'static str,

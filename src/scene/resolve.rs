@@ -3,7 +3,7 @@
 //! (given, or the number of box lengths).
 
 use super::presets;
-use super::spec::SceneSpec;
+use crate::model::scene::SceneSpec;
 
 pub fn resolve(spec: &SceneSpec) -> Result<SceneSpec, String> {
     let mut merged = match &spec.preset {

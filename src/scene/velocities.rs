@@ -2,8 +2,8 @@
 //! optionally with zero total momentum and the gas rescaled to an exact
 //! energy. Immovable particles (inverse mass 0) stay at rest.
 
-use super::spec::Velocities;
 use crate::engine::thermal::gaussian;
+use crate::model::scene::Velocities;
 use rand::RngExt;
 use rand_chacha::ChaCha8Rng;
 

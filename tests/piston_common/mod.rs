@@ -2,13 +2,13 @@
 //! statistics of a result over its runs.
 #![allow(dead_code)]
 
-use bonkers::analysis::piston::{Options, measure};
-use bonkers::analysis::piston_state::{Geometry, Samples};
-use bonkers::analysis::summary::Stats;
-use bonkers::study::descriptor::parse;
-use bonkers::study::output::RunOutput;
-use bonkers::study::plan::plan;
-use bonkers::study::plan_types::RunSpec;
+use bonkers::descriptor::load::parse;
+use bonkers::model::run_output::RunOutput;
+use bonkers::model::run_spec::RunSpec;
+use bonkers::runner::plan::plan;
+use bonkers::stats::summary::Stats;
+use bonkers::studies::piston::state::{Geometry, Samples};
+use bonkers::studies::piston::{Options, measure};
 use bonkers::theory::piston_equilibrium::oscillator_share;
 use rand::SeedableRng;
 
@@ -19,7 +19,7 @@ pub fn ensemble(text: &str) -> Vec<(RunSpec, RunOutput)> {
         .expect("plan")
         .into_iter()
         .map(|r| {
-            let out = bonkers::simulate::run(&r).expect("run");
+            let out = bonkers::runner::simulate::run(&r).expect("run");
             (r, out)
         })
         .collect()
@@ -72,7 +72,7 @@ pub fn geometry<const D: usize>(spec: &RunSpec) -> Geometry {
 /// stored series must hold every sample: at most 4000 of them).
 pub fn measure_with(spec: &RunSpec, out: &RunOutput, g: &Geometry) -> Vec<(&'static str, f64)> {
     let samples = Samples::of(out).expect("piston series");
-    assert!(samples.len() <= bonkers::simulate::MAX_STORED_POINTS);
+    assert!(samples.len() <= bonkers::runner::simulate::MAX_STORED_POINTS);
     measure(g, &samples, &Options::of(&spec.descriptor))
 }
 
@@ -100,7 +100,7 @@ pub fn assert_equipartition(
         dimension,
         per_side,
         per_side,
-        bonkers::analysis::piston::DRAWS,
+        bonkers::studies::piston::DRAWS,
     );
     eprintln!(
         "piston share {} +- {} ({expected}); oscillator share {} +- {} ({theory} +- {theory_se})",

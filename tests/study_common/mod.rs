@@ -2,8 +2,8 @@
 //! fake simulator (outputs are a pure function of the run's seed and params).
 #![allow(dead_code)]
 
-use bonkers::study::output::{Histogram, RunOutput, Series};
-use bonkers::study::plan_types::RunSpec;
+use bonkers::model::run_output::{Histogram, RunOutput, Series};
+use bonkers::model::run_spec::RunSpec;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 

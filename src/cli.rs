@@ -1,0 +1,323 @@
+//! The `study` command line: parse arguments, dispatch, map outcomes to exit
+//! codes (0 ok, 1 some runs failed, 2 bad input, 130 interrupted).
+
+use crate::descriptor::errors::StudyError;
+use crate::descriptor::load::{Loaded, show};
+use crate::model::run_spec::RunSpec;
+use crate::runner::estimate::{self, RunCost};
+use crate::runner::pipeline::{self, StudyOptions};
+use crate::runner::plan;
+use crate::runner::progress::{ProgressMode, human_duration};
+use crate::runner::run::SimulateFn;
+use clap::{Args, Parser, Subcommand};
+use std::collections::BTreeSet;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+
+#[derive(Debug, Parser)]
+#[command(
+    name = "study",
+    version,
+    about = "Ensemble studies of hard-particle gases on an exact event-driven engine"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Run a study: every sweep point x replica, then tables, plots and a report.
+    Run(RunArgs),
+    /// Check a descriptor and print its plan without running anything.
+    Validate(PlanArgs),
+    /// List the bundled studies, scenes, observables and analyses.
+    List,
+}
+
+#[derive(Debug, Args)]
+struct PlanArgs {
+    /// The study descriptor (TOML), e.g. studies/piston.toml.
+    file: PathBuf,
+    /// Replicas per sweep point (overrides `study.replicas`).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
+    replicas: Option<u32>,
+    /// Apply the descriptor's [quick] overrides (a smaller, faster study).
+    #[arg(long)]
+    quick: bool,
+    /// Accept plans of more than 100000 runs.
+    #[arg(long)]
+    yes: bool,
+}
+
+#[derive(Debug, Args)]
+struct RunArgs {
+    #[command(flatten)]
+    plan: PlanArgs,
+    /// Output directory (default: reports/<study name>/).
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Worker threads (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..))]
+    threads: Option<u64>,
+    /// Discard runs saved by an earlier, interrupted invocation instead of resuming.
+    #[arg(long)]
+    fresh: bool,
+    /// No progress output.
+    #[arg(long)]
+    quiet: bool,
+}
+
+/// Set by Ctrl-C: no new runs start.
+static STOP: AtomicBool = AtomicBool::new(false);
+
+/// Run the command line `args` (program name first); returns the exit code.
+pub fn main(args: Vec<std::ffi::OsString>, simulate: &SimulateFn<'_>) -> i32 {
+    let cli = match Cli::try_parse_from(args.clone()) {
+        Ok(cli) => cli,
+        Err(e) => {
+            let _ = e.print();
+            return if e.use_stderr() { 2 } else { 0 };
+        }
+    };
+    let result = match cli.command {
+        Command::Run(a) => run(a, args, simulate),
+        Command::Validate(a) => validate(&a),
+        Command::List => list(),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {e}");
+            e.exit_code()
+        }
+    }
+}
+
+fn run(
+    a: RunArgs,
+    args: Vec<std::ffi::OsString>,
+    simulate: &SimulateFn<'_>,
+) -> Result<i32, StudyError> {
+    // First Ctrl-C: finish the runs in flight and keep them; second: leave now.
+    // Saved runs are complete files either way, so nothing partial remains.
+    let _ = ctrlc::set_handler(|| {
+        if STOP.swap(true, Ordering::SeqCst) {
+            std::process::exit(130);
+        }
+        eprintln!("\nstudy: stopping after the runs in flight (Ctrl-C again to abandon them)");
+    });
+    let options = StudyOptions {
+        out: a.out,
+        threads: a.threads.map(|n| n as usize),
+        replicas: a.plan.replicas,
+        quick: a.plan.quick,
+        fresh: a.fresh,
+        progress: if a.quiet {
+            ProgressMode::Quiet
+        } else {
+            ProgressMode::Auto
+        },
+        yes: a.plan.yes,
+        command_line: args
+            .iter()
+            .map(|s| s.to_string_lossy().into_owned())
+            .collect(),
+    };
+    let outcome = pipeline::run_study(&a.plan.file, &options, simulate, &STOP)?;
+    if !a.quiet {
+        eprintln!(
+            "study: {} runs ({} run now, {} resumed, {} failed) -> {}",
+            outcome.planned,
+            outcome.ran,
+            outcome.resumed,
+            outcome.failed,
+            outcome.out_dir.display()
+        );
+    }
+    if outcome.failed > 0 {
+        eprintln!(
+            "study: {} run(s) failed; their status is in runs.parquet; run again to retry them",
+            outcome.failed
+        );
+        return Ok(1);
+    }
+    Ok(0)
+}
+
+fn validate(a: &PlanArgs) -> Result<i32, StudyError> {
+    let loaded = pipeline::prepare(&a.file, a.replicas, a.quick)?;
+    pipeline::confirm_size(&loaded, a.yes)?;
+    let specs = plan::plan(&loaded)?;
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    emit(&describe_plan(&loaded, &specs, threads));
+    Ok(0)
+}
+
+/// The plan in words: sweep, counts, and the estimated collisions and time
+/// on `threads` threads.
+pub fn describe_plan(loaded: &Loaded, specs: &[RunSpec], threads: usize) -> String {
+    let d = &loaded.descriptor;
+    let (points, _) = plan::count(loaded);
+    let mut out = format!("{}: ok — {}\n", loaded.file, d.study.name);
+    if let Some(sweep) = &d.sweep {
+        out += &format!("  sweep ({:?}):\n", sweep.mode).to_lowercase();
+        for (key, values) in &sweep.parameters {
+            let v: Vec<String> = plan::expand_values(values).iter().map(show).collect();
+            out += &format!("    {key} = [{}]\n", v.join(", "));
+        }
+    }
+    out += &format!(
+        "  points: {points}, replicas: {}, runs: {}\n",
+        d.study.replicas,
+        specs.len()
+    );
+    // One estimate per point: replicas differ only in their seeds.
+    let mut costs = Vec::new();
+    for (i, spec) in specs.iter().enumerate() {
+        if i == 0 || specs[i - 1].point_id != spec.point_id {
+            costs.push(estimate::run_cost(&spec.descriptor));
+        }
+    }
+    let replicas = f64::from(d.study.replicas);
+    let known: Vec<RunCost> = costs.iter().flatten().copied().collect();
+    if known.is_empty() || known.len() < costs.len() {
+        out += "  estimated cost: unknown (a scene could not be resolved)\n";
+        return out;
+    }
+    let collisions: f64 = known.iter().map(|c| c.collisions).sum::<f64>() * replicas;
+    let seconds: f64 = known.iter().map(RunCost::seconds).sum::<f64>() * replicas;
+    let busy = threads.min(specs.len()).max(1);
+    let dims: BTreeSet<usize> = known.iter().map(|c| c.dimension).collect();
+    let rates: Vec<String> = dims
+        .iter()
+        .map(|&dim| {
+            format!(
+                "{} collisions/s per thread in {dim}D",
+                approx(estimate::COLLISIONS_PER_SECOND[dim - 1])
+            )
+        })
+        .collect();
+    out += &format!(
+        "  estimated collisions: ~{} pair collisions ({} per run on average; kinetic theory of the initial state)\n",
+        approx(collisions),
+        approx(collisions / specs.len().max(1) as f64)
+    );
+    out += &format!(
+        "  estimated time: ~{} on {busy} {}, at a nominal {} (docs/performance.md); an estimate: sampling, analyses and dense or uneven scenes change it\n",
+        human_duration(seconds / busy as f64),
+        if busy == 1 { "thread" } else { "threads" },
+        rates.join(", ")
+    );
+    out
+}
+
+/// 1234 -> "1234", 1.5e7 -> "1.5e7".
+fn approx(x: f64) -> String {
+    if x < 1e4 {
+        format!("{x:.0}")
+    } else {
+        format!("{x:.1e}")
+    }
+}
+
+fn list() -> Result<i32, StudyError> {
+    emit(&listing());
+    Ok(0)
+}
+
+/// What `study list` prints.
+pub fn listing() -> String {
+    let mut out = String::new();
+    let candidates = studies_dirs();
+    match candidates.iter().find(|d| d.is_dir()) {
+        Some(dir) => {
+            let _ = writeln!(out, "studies ({}):", dir.display());
+            let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+                .map(|it| {
+                    it.flatten()
+                        .map(|e| e.path())
+                        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+                        .collect()
+                })
+                .unwrap_or_default();
+            files.sort();
+            if files.is_empty() {
+                let _ = writeln!(out, "  (none found)");
+            }
+            for f in files {
+                let stem = f
+                    .file_stem()
+                    .unwrap_or_default()
+                    .to_string_lossy()
+                    .into_owned();
+                let _ = writeln!(out, "  {stem:<24} {}", description(&f));
+            }
+        }
+        None => {
+            let looked: Vec<String> = candidates.iter().map(|d| d.display().to_string()).collect();
+            let _ = writeln!(out, "studies: none found (looked in {})", looked.join(", "));
+        }
+    }
+    let _ = writeln!(out, "scenes ([scene] preset = \"<name>\"):");
+    for p in crate::scene::presets::list() {
+        let _ = writeln!(out, "  {:<24} {}", p.name, p.about);
+    }
+    let _ = writeln!(
+        out,
+        "observables ([observe] series / scalars / histograms = [\"<name>\"]):"
+    );
+    for (kind, name, about) in crate::observe::CATALOGUE {
+        let _ = writeln!(out, "  {kind:<10} {name:<26} {about}");
+    }
+    let _ = writeln!(out, "analyses ([analysis.<name>]):");
+    for a in crate::studies::REGISTRY {
+        let options: Vec<String> = a
+            .options()
+            .iter()
+            .map(|o| format!("{} ({}, default {})", o.name, o.range_text(), o.default))
+            .collect();
+        let options = if options.is_empty() {
+            "no options".to_string()
+        } else {
+            format!("options: {}", options.join(", "))
+        };
+        let _ = writeln!(out, "  {:<24} {}; {options}", a.name(), a.about());
+    }
+    out
+}
+
+/// Where bundled studies may be, in order: `studies/` of the working
+/// directory; beside the executable or up to three folders above it
+/// (`target/release/study` in a checkout); the source tree it was built from.
+fn studies_dirs() -> Vec<PathBuf> {
+    let mut dirs = vec![PathBuf::from("studies")];
+    if let Ok(exe) = std::env::current_exe() {
+        dirs.extend(exe.ancestors().skip(1).take(4).map(|a| a.join("studies")));
+    }
+    dirs.push(Path::new(env!("CARGO_MANIFEST_DIR")).join("studies"));
+    dirs
+}
+
+fn description(path: &Path) -> String {
+    let text = std::fs::read_to_string(path).unwrap_or_default();
+    match text.parse::<toml::Table>() {
+        Ok(t) => t
+            .get("study")
+            .and_then(|s| s.get("description"))
+            .and_then(toml::Value::as_str)
+            .unwrap_or("")
+            .lines()
+            .next()
+            .unwrap_or("")
+            .to_string(),
+        Err(_) => "(does not parse; see `study validate`)".to_string(),
+    }
+}
+
+/// Print to stdout; a closed pipe (`study list | head`) is not an error.
+fn emit(text: &str) {
+    use std::io::Write;
+    let _ = std::io::stdout().lock().write_all(text.as_bytes());
+}

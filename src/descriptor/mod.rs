@@ -1,0 +1,13 @@
+//! A study descriptor from TOML: parsed, overridden (`--quick`, sweep
+//! values) and checked before anything runs, with errors placed at
+//! file:line:column.
+
+pub mod check;
+pub mod errors;
+pub mod explain;
+pub mod load;
+pub mod locate;
+pub mod overrides;
+pub mod validate;
+pub mod validate_observe;
+pub mod validate_scene;

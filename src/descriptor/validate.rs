@@ -1,0 +1,276 @@
+//! Semantic checks of a typed descriptor: what serde cannot see. Each problem
+//! names its key path so the caller can point at it in the source.
+
+use crate::model::descriptor::{Descriptor, Scale, SweepMode, SweepValues};
+use crate::model::scene::SceneSpec;
+
+/// One problem: the key it concerns, what is wrong, what would be right.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Problem {
+    pub key: String,
+    pub message: String,
+    pub hint: Option<String>,
+}
+
+pub type Check = Result<(), Problem>;
+
+pub fn bad(key: impl Into<String>, message: impl Into<String>, hint: Option<&str>) -> Check {
+    Err(Problem {
+        key: key.into(),
+        message: message.into(),
+        hint: hint.map(str::to_string),
+    })
+}
+
+pub fn positive(key: &str, v: f64) -> Check {
+    if v.is_finite() && v > 0.0 {
+        Ok(())
+    } else {
+        bad(key, format!("must be a positive number, got {v}"), None)
+    }
+}
+
+/// Radii may be 0: point particles (an ideal gas, or MacKay's point rods).
+pub fn non_negative(key: &str, v: f64) -> Check {
+    if v.is_finite() && v >= 0.0 {
+        Ok(())
+    } else {
+        bad(key, format!("must be a number >= 0, got {v}"), None)
+    }
+}
+
+/// Top-level sections a sweep may set. `[study]` is not among them: replicas
+/// and seeds shape the plan itself, so they cannot vary within it.
+pub const SWEEPABLE: [&str; 4] = ["scene", "run", "observe", "analysis"];
+
+/// The whole descriptor as one sweep point: `[study]`, the shape of
+/// `[sweep]`, and everything a run of it needs (`point`).
+pub fn descriptor(d: &Descriptor) -> Check {
+    study(d)?;
+    sweep(d)?;
+    point(d)
+}
+
+/// What one sweep point needs to run: `[run]`, the scene after its preset is
+/// resolved, `[observe]` and `[analysis.*]`.
+pub fn point(d: &Descriptor) -> Check {
+    run(d)?;
+    let scene = resolved(&d.scene)?;
+    crate::descriptor::validate_scene::scene(&scene)?;
+    crate::descriptor::validate_observe::observe(d, &scene)?;
+    crate::descriptor::validate_observe::analysis(d, &scene)
+}
+
+/// The scene with its preset applied; an unknown preset is a problem at `scene.preset`.
+pub fn resolved(s: &SceneSpec) -> Result<SceneSpec, Problem> {
+    if let Some(name) = &s.preset
+        && crate::scene::presets::find(name).is_none()
+    {
+        let valid: Vec<String> = crate::scene::presets::names()
+            .iter()
+            .map(|n| n.to_string())
+            .collect();
+        let hint = match crate::descriptor::load::closest(name, &valid) {
+            Some(best) => format!("did you mean \"{best}\"? (`study list` shows every preset)"),
+            None => format!("bundled presets: {}", valid.join(", ")),
+        };
+        return Err(Problem {
+            key: "scene.preset".into(),
+            message: format!("unknown scene preset \"{name}\""),
+            hint: Some(hint),
+        });
+    }
+    crate::scene::resolve(s).map_err(|message| Problem {
+        key: "scene.preset".into(),
+        message,
+        hint: None,
+    })
+}
+
+pub fn study(d: &Descriptor) -> Check {
+    let name = &d.study.name;
+    let ok = !name.is_empty()
+        && !name.starts_with('.')
+        && name
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c));
+    if !ok {
+        return bad(
+            "study.name",
+            format!("{name:?} cannot name an output folder"),
+            Some("use letters, digits, `-`, `_` or `.` (not first), e.g. `name = \"piston\"`"),
+        );
+    }
+    if d.study.replicas == 0 {
+        return bad(
+            "study.replicas",
+            "must be at least 1",
+            Some("`replicas = 1` runs each sweep point once"),
+        );
+    }
+    Ok(())
+}
+
+pub fn run(d: &Descriptor) -> Check {
+    let r = &d.run;
+    match (r.duration, r.collisions) {
+        (None, None) => {
+            return bad(
+                "run",
+                "says neither how long to run nor how many collisions",
+                Some("add `duration = 1000.0` (simulated time) or `collisions = 1000000`"),
+            );
+        }
+        (Some(t), _) => positive("run.duration", t)?,
+        (None, Some(0)) => return bad("run.collisions", "must be at least 1", None),
+        _ => {}
+    }
+    if !(r.equilibrate.is_finite() && r.equilibrate >= 0.0) {
+        return bad(
+            "run.equilibrate",
+            format!("must be a number >= 0, got {}", r.equilibrate),
+            None,
+        );
+    }
+    if let Some(dt) = r.sample_every {
+        positive("run.sample_every", dt)?;
+        // Analyses keep every sample of a run in memory.
+        if let Some(t) = r.duration
+            && t / dt > MAX_SAMPLES
+        {
+            return bad(
+                "run.sample_every",
+                format!(
+                    "{dt} gives {:.1e} samples over the duration {t}; a run keeps at most {MAX_SAMPLES:.0e}",
+                    t / dt
+                ),
+                Some(&format!(
+                    "sample less often, e.g. `sample_every = {}`",
+                    t / 1e5
+                )),
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Samples one run may take: every one is kept in memory for the analyses.
+const MAX_SAMPLES: f64 = 1e7;
+
+/// The shape of `[sweep]`: values present, ranges sound, zip lengths equal.
+pub fn sweep(d: &Descriptor) -> Check {
+    let Some(sweep) = &d.sweep else { return Ok(()) };
+    if sweep.parameters.is_empty() {
+        return bad(
+            "sweep.parameters",
+            "is empty",
+            Some("name at least one key path to sweep, or remove [sweep]"),
+        );
+    }
+    let mut lengths = Vec::new();
+    for (key, values) in &sweep.parameters {
+        let at = format!("sweep.parameters.{key}");
+        let n = match values {
+            SweepValues::List(v) if v.is_empty() => {
+                return bad(at, "has no values", Some("give at least one value"));
+            }
+            SweepValues::List(v) => {
+                if sweep.mode == SweepMode::Product
+                    && let Some((i, x)) = v.iter().enumerate().find(|(i, x)| v[..*i].contains(x))
+                {
+                    return bad(
+                        at,
+                        format!(
+                            "value {} is listed twice (items {} and {i})",
+                            crate::descriptor::load::show(x),
+                            v.iter().position(|y| y == x).unwrap_or(0)
+                        ),
+                        Some("remove the repeat: both points would run with the same seeds"),
+                    );
+                }
+                v.len()
+            }
+            SweepValues::Range(r) => {
+                if r.steps == 0 {
+                    return bad(at, "range needs `steps >= 1`", None);
+                }
+                if r.steps as u64 > crate::runner::plan::HARD_LIMIT {
+                    return bad(
+                        at,
+                        format!("{} steps is more than a study can run", r.steps),
+                        Some("use fewer steps"),
+                    );
+                }
+                if !r.from.is_finite() || !r.to.is_finite() {
+                    return bad(
+                        at,
+                        format!(
+                            "range bounds must be finite numbers, got from = {}, to = {}",
+                            r.from, r.to
+                        ),
+                        None,
+                    );
+                }
+                if r.from == r.to && r.steps > 1 {
+                    return bad(
+                        at,
+                        format!(
+                            "from = to = {} with {} steps repeats one value",
+                            r.from, r.steps
+                        ),
+                        Some("use `steps = 1`, or different bounds"),
+                    );
+                }
+                if r.scale == Scale::Log && (r.from <= 0.0 || r.to <= 0.0) {
+                    return bad(
+                        at,
+                        format!(
+                            "a log range needs positive bounds, got from = {}, to = {}",
+                            r.from, r.to
+                        ),
+                        Some("use `scale = \"linear\"` or bounds > 0"),
+                    );
+                }
+                r.steps
+            }
+        };
+        lengths.push((key.clone(), n));
+    }
+    if sweep.mode == SweepMode::Zip
+        && let Some((k0, n0)) = lengths.first()
+        && let Some((k, n)) = lengths.iter().find(|(_, n)| n != n0)
+    {
+        return bad(
+            "sweep.mode",
+            format!(
+                "zip needs equally long parameters, but `{k0}` has {n0} values and `{k}` has {n}"
+            ),
+            Some("give every parameter the same number of values, or use `mode = \"product\"`"),
+        );
+    }
+    Ok(())
+}
+
+/// A sweep key must start at a section that describes runs.
+pub fn sweep_key(key: &str) -> Check {
+    let first = key.split('.').next().unwrap_or_default();
+    if SWEEPABLE.contains(&first) && key.contains('.') {
+        return Ok(());
+    }
+    let valid: Vec<String> = SWEEPABLE.iter().map(|s| s.to_string()).collect();
+    let hint = match crate::descriptor::load::closest(first, &valid) {
+        Some(best) if best != first => format!(
+            "did you mean `{best}.…`? keys start with one of {}",
+            SWEEPABLE.join(", ")
+        ),
+        _ => format!(
+            "write a full key path such as `scene.piston.mass`; keys start with one of {}",
+            SWEEPABLE.join(", ")
+        ),
+    };
+    bad(
+        key,
+        format!("`{key}` is not a key path that can be swept"),
+        Some(&hint),
+    )
+}

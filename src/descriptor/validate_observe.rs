@@ -1,0 +1,191 @@
+//! Checks of `[observe]` and `[analysis.*]`: every name known, every option
+//! known and in range, and what each needs present in the (resolved) scene
+//! and run.
+
+use crate::descriptor::load::closest;
+use crate::descriptor::validate::{Check, bad};
+use crate::model::descriptor::Descriptor;
+use crate::model::need::Need;
+use crate::model::scene::{Boundary, SceneSpec};
+use crate::observe::CATALOGUE;
+use crate::studies;
+
+/// What an observable needs beyond its name.
+pub fn needs(kind: &str, name: &str) -> &'static [Need] {
+    match (kind, name) {
+        ("series", "piston_position") => &[Need::Sampling, Need::Piston],
+        ("series", _) | ("histograms", _) | ("scalars", "temperature") => &[Need::Sampling],
+        ("scalars", "wall_pressure") => &[Need::Walls],
+        ("scalars", "wall_heat") => &[Need::ThermalWalls],
+        _ => &[],
+    }
+}
+
+/// `[observe]` of a descriptor whose scene is `scene` (resolved).
+pub fn observe(d: &Descriptor, scene: &SceneSpec) -> Check {
+    let o = &d.observe;
+    for (kind, names) in [
+        ("series", &o.series),
+        ("scalars", &o.scalars),
+        ("histograms", &o.histograms),
+    ] {
+        for (i, name) in names.iter().enumerate() {
+            let key = format!("observe.{kind}.{i}");
+            known(kind, name, &key)?;
+            if names[..i].contains(name) {
+                return bad(key, format!("`{name}` is listed twice"), None);
+            }
+            for need in needs(kind, name) {
+                met(*need, d, scene, &key, &format!("`{name}`"))?;
+            }
+            if (kind, name.as_str()) == ("series", "positions") {
+                positions_fit(d, scene, &key)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Values a run's `positions` series may hold (8 bytes each, in memory).
+const MAX_POSITION_VALUES: f64 = 1e8;
+
+/// The `positions` series keeps one value per particle per sample.
+fn positions_fit(d: &Descriptor, scene: &SceneSpec, key: &str) -> Check {
+    let (Some(t), Some(dt)) = (d.run.duration, d.run.sample_every) else {
+        return Ok(());
+    };
+    let values = t / dt * crate::descriptor::validate_scene::particles(scene) as f64;
+    if values <= MAX_POSITION_VALUES {
+        return Ok(());
+    }
+    bad(
+        key,
+        format!(
+            "`positions` would hold {values:.1e} values per run (every particle at every sample); \
+             a run keeps at most {MAX_POSITION_VALUES:.0e}"
+        ),
+        Some("sample less often, run shorter, or use fewer particles"),
+    )
+}
+
+fn known(kind: &str, name: &str, key: &str) -> Check {
+    if CATALOGUE.iter().any(|(k, n, _)| *k == kind && *n == name) {
+        return Ok(());
+    }
+    let valid: Vec<String> = CATALOGUE
+        .iter()
+        .filter(|(k, _, _)| *k == kind)
+        .map(|(_, n, _)| n.to_string())
+        .collect();
+    let elsewhere = CATALOGUE.iter().find(|(_, n, _)| *n == name);
+    let hint = match (elsewhere, closest(name, &valid)) {
+        (Some((other, _, _)), _) => {
+            format!("`{name}` is a {other} observable: list it under `{other}`")
+        }
+        (None, Some(best)) => format!("did you mean `{best}`?"),
+        (None, None) => format!("{kind} observables: {}", backticked(&valid)),
+    };
+    bad(
+        key,
+        format!("unknown {kind} observable `{name}`"),
+        Some(&hint),
+    )
+}
+
+/// `[analysis.*]`: known names, known options of the right type and range.
+pub fn analysis(d: &Descriptor, scene: &SceneSpec) -> Check {
+    for (name, options) in &d.analysis {
+        let key = format!("analysis.{name}");
+        let Some(info) = studies::find(name) else {
+            let valid = studies::names();
+            let hint = match closest(name, &valid) {
+                Some(best) => format!("did you mean `{best}`?"),
+                None => format!("analyses: {}", backticked(&valid)),
+            };
+            return bad(key, format!("unknown analysis `{name}`"), Some(&hint));
+        };
+        for (option, value) in options {
+            let key = format!("{key}.{option}");
+            let Some(spec) = info.options().iter().find(|o| o.name == option) else {
+                let valid: Vec<String> =
+                    info.options().iter().map(|o| o.name.to_string()).collect();
+                let hint = match closest(option, &valid) {
+                    Some(best) => format!("did you mean `{best}`?"),
+                    None if valid.is_empty() => format!("the {name} analysis takes no options"),
+                    None => format!("options of `{name}`: {}", backticked(&valid)),
+                };
+                return bad(
+                    key,
+                    format!("unknown option `{option}` of the {name} analysis"),
+                    Some(&hint),
+                );
+            };
+            let x = value
+                .as_float()
+                .or_else(|| value.as_integer().map(|i| i as f64));
+            match x {
+                Some(x) if spec.admits(x) => {}
+                Some(x) => {
+                    return bad(
+                        key,
+                        format!("must be {}, got {x}", spec.range_text()),
+                        Some(spec.about),
+                    );
+                }
+                None => {
+                    return bad(
+                        key,
+                        format!("must be {}, got a {}", spec.range_text(), value.type_str()),
+                        Some(&format!("e.g. `{option} = {}`", spec.default)),
+                    );
+                }
+            }
+        }
+        for need in info.needs() {
+            met(*need, d, scene, &key, &format!("the {name} analysis"))?;
+        }
+    }
+    Ok(())
+}
+
+/// `need` holds for `who` (named at `key`), or the problem says what to add.
+fn met(need: Need, d: &Descriptor, scene: &SceneSpec, key: &str, who: &str) -> Check {
+    let walled =
+        |k: usize| scene.boundary.as_ref().and_then(|b| b.get(k)) != Some(&Boundary::Periodic);
+    let dimension = crate::descriptor::validate_scene::dimension(scene);
+    let (ok, what, hint) = match need {
+        Need::Piston => (
+            scene.piston.is_some(),
+            "a piston in the scene",
+            "add `[scene.piston]` with a `mass` (1D scenes)",
+        ),
+        Need::Sampling => (
+            d.run.sample_every.is_some(),
+            "samples",
+            "set `sample_every` in [run], e.g. `sample_every = 1.0`",
+        ),
+        Need::Walls => (
+            (0..dimension).any(walled),
+            "walls",
+            "make at least one axis of `scene.boundary` \"walls\"",
+        ),
+        Need::ThermalWalls => (
+            !scene.thermal_walls.is_empty(),
+            "thermal walls",
+            "add a `[[scene.thermal_walls]]` table with `axis`, `side` and `temperature`",
+        ),
+    };
+    if ok {
+        Ok(())
+    } else {
+        bad(key, format!("{who} needs {what}"), Some(hint))
+    }
+}
+
+fn backticked(names: &[String]) -> String {
+    names
+        .iter()
+        .map(|n| format!("`{n}`"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}

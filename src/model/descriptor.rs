@@ -1,0 +1,115 @@
+//! The typed study descriptor (`studies/*.toml`). Parsing, validation and the
+//! error messages live in `descriptor.rs`; these are the shapes.
+
+use crate::model::scene::SceneSpec;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Descriptor {
+    pub study: StudySection,
+    pub scene: SceneSpec,
+    #[serde(default)]
+    pub sweep: Option<SweepSection>,
+    pub run: RunSection,
+    #[serde(default)]
+    pub observe: ObserveSection,
+    /// Named analyses, each a table of its own options (may be empty).
+    #[serde(default)]
+    pub analysis: BTreeMap<String, toml::Table>,
+    /// Overrides applied by `--quick`: key path -> value (e.g. "study.replicas" = 2).
+    #[serde(default)]
+    pub quick: BTreeMap<String, toml::Value>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StudySection {
+    pub name: String,
+    #[serde(default)]
+    pub description: String,
+    #[serde(default = "default_replicas")]
+    pub replicas: u32,
+    #[serde(default)]
+    pub seed: u64,
+}
+
+fn default_replicas() -> u32 {
+    1
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepSection {
+    /// "product" (default) or "zip".
+    #[serde(default)]
+    pub mode: SweepMode,
+    /// Key path (e.g. "scene.piston.mass") -> values.
+    pub parameters: BTreeMap<String, SweepValues>,
+}
+
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SweepMode {
+    #[default]
+    Product,
+    Zip,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum SweepValues {
+    /// An explicit list of values.
+    List(Vec<toml::Value>),
+    /// `{ from, to, steps, scale = "linear" | "log" }`.
+    Range(SweepRange),
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepRange {
+    pub from: f64,
+    pub to: f64,
+    pub steps: usize,
+    #[serde(default)]
+    pub scale: Scale,
+}
+
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Scale {
+    #[default]
+    Linear,
+    Log,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RunSection {
+    /// Simulated time to run after equilibration (reduced units).
+    #[serde(default)]
+    pub duration: Option<f64>,
+    /// Or: number of pair collisions to run after equilibration.
+    #[serde(default)]
+    pub collisions: Option<u64>,
+    /// Simulated time discarded before measuring.
+    #[serde(default)]
+    pub equilibrate: f64,
+    /// Interval between samples (the seeds' clock Tc).
+    #[serde(default)]
+    pub sample_every: Option<f64>,
+}
+
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ObserveSection {
+    /// Observable names (see `observe::catalogue`); only these are computed.
+    #[serde(default)]
+    pub series: Vec<String>,
+    #[serde(default)]
+    pub histograms: Vec<String>,
+    /// Scalar observables (time averages), e.g. "wall_pressure".
+    #[serde(default)]
+    pub scalars: Vec<String>,
+}

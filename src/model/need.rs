@@ -1,0 +1,14 @@
+//! What a study or an observable needs from the scene and the run; the
+//! descriptor checks say what to add when one is missing.
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Need {
+    /// A piston in the scene.
+    Piston,
+    /// `[run] sample_every`: the quantity is read off samples.
+    Sampling,
+    /// At least one axis with walls (not periodic).
+    Walls,
+    /// At least one thermal wall.
+    ThermalWalls,
+}

@@ -1,0 +1,17 @@
+//! One planned simulation: the contract between the planner and the simulator.
+
+use crate::model::descriptor::Descriptor;
+
+/// A sweep point x replica, with its own seed and the descriptor as it applies
+/// to this point (sweep values already substituted).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunSpec {
+    pub run_id: u64,
+    pub point_id: u64,
+    pub replica: u32,
+    /// Seed of this run's ChaCha stream, derived from (study seed, point, replica).
+    pub seed: u64,
+    /// Swept parameters of this point: (key path, value).
+    pub params: Vec<(String, toml::Value)>,
+    pub descriptor: Descriptor,
+}

@@ -1,0 +1,128 @@
+//! What `study validate` expects a plan to cost, before running it: pair
+//! collisions from the kinetic theory of a hard-particle gas, and time from a
+//! nominal collision rate per thread. Estimates, not promises: the dense,
+//! inhomogeneous or far-from-equilibrium scenes differ from them.
+
+use crate::descriptor::validate::resolved;
+use crate::descriptor::validate_scene::{count, dimension};
+use crate::model::descriptor::Descriptor;
+use crate::model::scene::{Mass, SceneSpec, Velocities};
+use std::f64::consts::PI;
+
+/// Nominal pair collisions per second on one thread in 1D, 2D and 3D: the
+/// engine benchmarks of docs/performance.md (4.6 M/s for rods, 0.8 M/s for
+/// disks, 0.3-0.4 M/s for spheres on one core), rounded down because small
+/// systems with sampling and analyses do more per collision.
+pub const COLLISIONS_PER_SECOND: [f64; 3] = [3.0e6, 0.8e6, 0.3e6];
+
+/// The expected cost of one run of a sweep point's descriptor.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RunCost {
+    /// Pair collisions, equilibration included.
+    pub collisions: f64,
+    pub dimension: usize,
+}
+
+impl RunCost {
+    /// Seconds on one thread at the nominal rate.
+    pub fn seconds(&self) -> f64 {
+        self.collisions / COLLISIONS_PER_SECOND[self.dimension.clamp(1, 3) - 1]
+    }
+}
+
+/// Expected cost of one run; None when the scene does not resolve.
+pub fn run_cost(d: &Descriptor) -> Option<RunCost> {
+    let scene = resolved(&d.scene).ok()?;
+    let rate = collision_rate(&scene)?;
+    let timed = |t: f64| rate * t;
+    let measured = match (d.run.duration, d.run.collisions) {
+        (Some(t), _) => timed(t),
+        (None, Some(c)) => c as f64,
+        (None, None) => return None,
+    };
+    Some(RunCost {
+        collisions: measured + timed(d.run.equilibrate),
+        dimension: dimension(&scene),
+    })
+}
+
+/// Pair collisions per unit time in a scene at its initial temperature:
+/// N z / 2, with each particle's collision frequency z = rho <|v_rel|> in 1D
+/// (rho over the free length, Tonks), rho sigma <|v_rel|> g(sigma) for disks
+/// and rho pi sigma^2 <|v_rel|> g(sigma) for spheres, g at contact from
+/// Henderson (2D) and Carnahan-Starling (3D); <|v_rel|> for the mean mass.
+pub fn collision_rate(scene: &SceneSpec) -> Option<f64> {
+    let d = dimension(scene);
+    let size = scene.box_size.as_ref()?;
+    let volume: f64 = size.iter().product();
+    let gas: usize = (0..scene.species.len()).map(|i| count(scene, i)).sum();
+    let n = gas + usize::from(scene.piston.is_some());
+    if n < 2 || volume <= 0.0 {
+        return Some(0.0);
+    }
+    let weighted = |f: &dyn Fn(usize) -> f64| {
+        (0..scene.species.len())
+            .map(|i| count(scene, i) as f64 * f(i))
+            .sum::<f64>()
+            / gas.max(1) as f64
+    };
+    let mass = weighted(&|i| match scene.species[i].mass {
+        Mass::Fixed(m) if m.is_finite() => m,
+        Mass::Fixed(_) => f64::NAN,
+        Mass::Range([lo, hi]) => 0.5 * (lo + hi),
+    });
+    let sigma = weighted(&|i| scene.species[i].radius.bounds().iter().sum::<f64>());
+    let kt = temperature(scene, mass, gas);
+    let rho = n as f64 / volume;
+    let phi = rho * ball_volume(d, sigma);
+    let z = match d {
+        1 => rho / (1.0 - phi).max(1e-3) * 2.0 * (kt / (PI * mass)).sqrt(),
+        2 => {
+            let g = (1.0 - 7.0 * phi / 16.0) / (1.0 - phi).max(1e-3).powi(2);
+            rho * sigma * (PI * kt / mass).sqrt() * g
+        }
+        _ => {
+            let g = (1.0 - phi / 2.0) / (1.0 - phi).max(1e-3).powi(3);
+            rho * PI * sigma * sigma * (16.0 * kt / (PI * mass)).sqrt() * g
+        }
+    };
+    let rate = 0.5 * n as f64 * z;
+    rate.is_finite().then_some(rate)
+}
+
+/// Volume of a ball of diameter `sigma` in `d` dimensions.
+fn ball_volume(d: usize, sigma: f64) -> f64 {
+    match d {
+        1 => sigma,
+        2 => PI * sigma * sigma / 4.0,
+        _ => PI * sigma.powi(3) / 6.0,
+    }
+}
+
+/// kT of the initial velocities (or its equivalent m <v^2> / d for equal
+/// or explicit ones); 1 where the scene does not say.
+fn temperature(scene: &SceneSpec, mass: f64, gas: usize) -> f64 {
+    let d = dimension(scene) as f64;
+    let from_speeds = |v2: f64| mass * v2 / d;
+    let kt = match &scene.velocities {
+        Some(Velocities::Maxwell {
+            energy: Some(e), ..
+        })
+        | Some(Velocities::Uniform {
+            energy: Some(e), ..
+        }) => 2.0 * e / (d * gas.max(1) as f64),
+        Some(Velocities::Maxwell { temperature, .. }) => *temperature,
+        // Momentum components uniform in [-p, p]: m <v_x^2> = p^2 / (3 m).
+        Some(Velocities::Uniform { p, .. }) => p * p / (3.0 * mass),
+        Some(Velocities::Equal { velocity }) => from_speeds(velocity.iter().map(|v| v * v).sum()),
+        Some(Velocities::Explicit { velocities }) => from_speeds(
+            velocities
+                .iter()
+                .map(|v| v.iter().map(|x| x * x).sum::<f64>())
+                .sum::<f64>()
+                / velocities.len().max(1) as f64,
+        ),
+        None => 1.0,
+    };
+    if kt.is_finite() && kt > 0.0 { kt } else { 1.0 }
+}

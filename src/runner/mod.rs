@@ -1,0 +1,15 @@
+//! `study run`: descriptor -> plan -> parallel runs -> tables -> report.
+
+pub mod cpu_time;
+pub mod estimate;
+pub mod lock;
+pub mod manifest;
+pub mod pipeline;
+pub mod plan;
+pub mod progress;
+pub mod publish;
+pub mod record;
+pub mod run;
+pub mod seeds;
+pub mod simulate;
+pub mod store;

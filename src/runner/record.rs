@@ -1,0 +1,167 @@
+//! A finished run as saved in `OUT/runs/run-<id>.json`. Floats are saved as
+//! strings in Rust's shortest round-trip form ("0.1", "NaN", "inf"): JSON has
+//! no NaN or infinity, and serde_json's number parsing is not exact to the
+//! last bit, while a resumed study must give bit-identical tables.
+
+use crate::model::run_output::{Histogram, RunOutput, Series};
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
+
+/// A finished run, as handed to the store.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunRecord {
+    pub run_id: u64,
+    /// Hash of what the run did (see `runner::fingerprint`): a saved run is
+    /// reused only if this plan would run exactly the same.
+    pub fingerprint: String,
+    /// "ok" or "failed: <message>".
+    pub status: String,
+    pub output: RunOutput,
+}
+
+impl RunRecord {
+    pub fn ok(&self) -> bool {
+        self.status == "ok"
+    }
+
+    pub fn to_json(&self) -> serde_json::Result<String> {
+        serde_json::to_string(&Saved::from(self))
+    }
+
+    pub fn from_json(text: &str) -> serde_json::Result<RunRecord> {
+        serde_json::from_str::<Saved>(text).map(RunRecord::from)
+    }
+}
+
+#[derive(Clone, Copy)]
+struct F(f64);
+
+/// A number a record did not save is unknown.
+impl Default for F {
+    fn default() -> F {
+        F(f64::NAN)
+    }
+}
+
+impl Serialize for F {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        // `{:?}` is the shortest text that parses back to the same bits.
+        s.serialize_str(&format!("{:?}", self.0))
+    }
+}
+
+impl<'de> Deserialize<'de> for F {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<F, D::Error> {
+        #[derive(Deserialize)]
+        #[serde(untagged)]
+        enum Raw {
+            N(f64),
+            S(String),
+        }
+        match Raw::deserialize(d)? {
+            Raw::N(x) => Ok(F(x)),
+            Raw::S(s) => s
+                .parse::<f64>()
+                .map(F)
+                .map_err(|_| serde::de::Error::custom(format!("not a number: {s:?}"))),
+        }
+    }
+}
+
+fn wrap(v: &[f64]) -> Vec<F> {
+    v.iter().copied().map(F).collect()
+}
+
+fn unwrap(v: Vec<F>) -> Vec<f64> {
+    v.into_iter().map(|f| f.0).collect()
+}
+
+/// (observable, lo, hi, count) of one histogram.
+type SavedHistogram = (String, Vec<F>, Vec<F>, Vec<F>);
+
+#[derive(Serialize, Deserialize)]
+struct Saved {
+    run_id: u64,
+    fingerprint: String,
+    status: String,
+    scalars: Vec<(String, F)>,
+    series: Vec<(String, Vec<F>, Vec<F>)>,
+    histograms: Vec<SavedHistogram>,
+    events: u64,
+    collisions: u64,
+    wall_seconds: F,
+    #[serde(default)]
+    cpu_seconds: F,
+    #[serde(default)]
+    prepare_seconds: F,
+}
+
+impl From<&RunRecord> for Saved {
+    fn from(r: &RunRecord) -> Saved {
+        let o = &r.output;
+        Saved {
+            run_id: r.run_id,
+            fingerprint: r.fingerprint.clone(),
+            status: r.status.clone(),
+            scalars: o.scalars.iter().map(|(k, v)| (k.clone(), F(*v))).collect(),
+            series: o
+                .series
+                .iter()
+                .map(|s| (s.observable.clone(), wrap(&s.t), wrap(&s.value)))
+                .collect(),
+            histograms: o
+                .histograms
+                .iter()
+                .map(|h| {
+                    (
+                        h.observable.clone(),
+                        wrap(&h.lo),
+                        wrap(&h.hi),
+                        wrap(&h.count),
+                    )
+                })
+                .collect(),
+            events: o.events,
+            collisions: o.collisions,
+            wall_seconds: F(o.wall_seconds),
+            cpu_seconds: F(o.cpu_seconds),
+            prepare_seconds: F(o.prepare_seconds),
+        }
+    }
+}
+
+impl From<Saved> for RunRecord {
+    fn from(s: Saved) -> RunRecord {
+        RunRecord {
+            run_id: s.run_id,
+            fingerprint: s.fingerprint,
+            status: s.status,
+            output: RunOutput {
+                scalars: s.scalars.into_iter().map(|(k, v)| (k, v.0)).collect(),
+                series: s
+                    .series
+                    .into_iter()
+                    .map(|(observable, t, value)| Series {
+                        observable,
+                        t: unwrap(t),
+                        value: unwrap(value),
+                    })
+                    .collect(),
+                histograms: s
+                    .histograms
+                    .into_iter()
+                    .map(|(observable, lo, hi, count)| Histogram {
+                        observable,
+                        lo: unwrap(lo),
+                        hi: unwrap(hi),
+                        count: unwrap(count),
+                    })
+                    .collect(),
+                events: s.events,
+                collisions: s.collisions,
+                wall_seconds: s.wall_seconds.0,
+                cpu_seconds: s.cpu_seconds.0,
+                prepare_seconds: s.prepare_seconds.0,
+            },
+        }
+    }
+}

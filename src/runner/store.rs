@@ -1,0 +1,318 @@
+//! Tidy Parquet tables of a study (polars), each written to a temporary file
+//! and renamed, so a reader never sees half a table.
+
+use crate::files::write_via_temp;
+use crate::model::run_output::RunOutput;
+use crate::model::run_spec::RunSpec;
+use crate::model::summary::SummaryRow;
+use crate::runner::record::RunRecord;
+use anyhow::Context;
+use polars::prelude::{Column, DataFrame, ParquetReader, ParquetWriter, SerReader};
+use std::collections::{BTreeMap, HashSet};
+use std::path::{Path, PathBuf};
+
+/// Write `df` as Parquet at `path`, atomically.
+pub fn write_parquet(path: &Path, df: &mut DataFrame) -> anyhow::Result<()> {
+    write_via_temp(path, |file| {
+        ParquetWriter::new(file).finish(df)?;
+        Ok(())
+    })
+}
+
+/// Read a Parquet table back (tests, `.ci/run`, later analyses).
+pub fn read_parquet(path: &Path) -> anyhow::Result<DataFrame> {
+    let file =
+        std::fs::File::open(path).with_context(|| format!("cannot open {}", path.display()))?;
+    ParquetReader::new(file)
+        .finish()
+        .with_context(|| format!("cannot read {}", path.display()))
+}
+
+/// Columns of `runs.parquet` that are always there; a scalar result whose
+/// name is taken (by these or a swept key path) is stored as `result.<name>`.
+const FIXED: [&str; 10] = [
+    "run_id",
+    "point_id",
+    "replica",
+    "seed",
+    "events",
+    "collisions",
+    "wall_seconds",
+    "cpu_seconds",
+    "prepare_seconds",
+    "status",
+];
+
+/// Write runs.parquet, series.parquet and histograms.parquet (the last two
+/// only if some run produced them) and summary.parquet. Returns the files written.
+pub fn write_tables(
+    out_dir: &Path,
+    runs: &[(RunSpec, RunRecord)],
+    summary: &[SummaryRow],
+) -> anyhow::Result<Vec<PathBuf>> {
+    let mut written = Vec::new();
+    let mut put = |name: &str, mut df: DataFrame| -> anyhow::Result<()> {
+        let path = out_dir.join(name);
+        write_parquet(&path, &mut df)?;
+        written.push(path);
+        Ok(())
+    };
+    put("runs.parquet", runs_table(runs)?)?;
+    if runs.iter().any(|(_, r)| !r.output.series.is_empty()) {
+        put("series.parquet", series_table(runs)?)?;
+    }
+    if runs.iter().any(|(_, r)| !r.output.histograms.is_empty()) {
+        put("histograms.parquet", histograms_table(runs)?)?;
+    }
+    put("summary.parquet", summary_table(runs, summary)?)?;
+    Ok(written)
+}
+
+/// One column per swept key path: f64 if every value is a number, else text.
+fn param_columns(specs: &[&RunSpec], rows: &[&[(String, toml::Value)]]) -> Vec<Column> {
+    let Some(first) = specs.first() else {
+        return Vec::new();
+    };
+    first
+        .params
+        .iter()
+        .enumerate()
+        .map(|(i, (key, _))| {
+            let values: Vec<Option<&toml::Value>> =
+                rows.iter().map(|p| p.get(i).map(|(_, v)| v)).collect();
+            let numeric = values.iter().flatten().all(|v| as_f64(v).is_some());
+            if numeric {
+                let col: Vec<Option<f64>> = values.iter().map(|v| v.and_then(as_f64)).collect();
+                Column::new(key.as_str().into(), col)
+            } else {
+                let col: Vec<Option<String>> = values.iter().map(|v| v.map(text)).collect();
+                Column::new(key.as_str().into(), col)
+            }
+        })
+        .collect()
+}
+
+pub fn as_f64(v: &toml::Value) -> Option<f64> {
+    match v {
+        toml::Value::Integer(i) => Some(*i as f64),
+        toml::Value::Float(f) => Some(*f),
+        _ => None,
+    }
+}
+
+fn text(v: &toml::Value) -> String {
+    match v {
+        toml::Value::String(s) => s.clone(),
+        other => other.to_string(),
+    }
+}
+
+fn runs_table(runs: &[(RunSpec, RunRecord)]) -> anyhow::Result<DataFrame> {
+    let specs: Vec<&RunSpec> = runs.iter().map(|(s, _)| s).collect();
+    let params: Vec<&[(String, toml::Value)]> = specs.iter().map(|s| s.params.as_slice()).collect();
+    let mut columns = vec![
+        Column::new(
+            "run_id".into(),
+            runs.iter().map(|(s, _)| s.run_id).collect::<Vec<u64>>(),
+        ),
+        Column::new(
+            "point_id".into(),
+            runs.iter().map(|(s, _)| s.point_id).collect::<Vec<u64>>(),
+        ),
+        Column::new(
+            "replica".into(),
+            runs.iter().map(|(s, _)| s.replica).collect::<Vec<u32>>(),
+        ),
+        Column::new(
+            "seed".into(),
+            runs.iter().map(|(s, _)| s.seed).collect::<Vec<u64>>(),
+        ),
+    ];
+    columns.extend(param_columns(&specs, &params));
+    // Scalar names in order of first appearance (deterministic: runs are in plan order).
+    let mut names: Vec<&str> = Vec::new();
+    for (_, r) in runs {
+        for (name, _) in &r.output.scalars {
+            if !names.contains(&name.as_str()) {
+                names.push(name);
+            }
+        }
+    }
+    let mut taken: HashSet<String> = FIXED.iter().map(|s| s.to_string()).collect();
+    if let Some(first) = specs.first() {
+        taken.extend(first.params.iter().map(|(k, _)| k.clone()));
+    }
+    for name in names {
+        let col: Vec<Option<f64>> = runs.iter().map(|(_, r)| r.output.scalar(name)).collect();
+        let column_name = free_name(name, &mut taken);
+        columns.push(Column::new(column_name.as_str().into(), col));
+    }
+    columns.push(Column::new(
+        "events".into(),
+        runs.iter()
+            .map(|(_, r)| r.output.events)
+            .collect::<Vec<u64>>(),
+    ));
+    columns.push(Column::new(
+        "collisions".into(),
+        runs.iter()
+            .map(|(_, r)| r.output.collisions)
+            .collect::<Vec<u64>>(),
+    ));
+    type Timing = fn(&RunOutput) -> f64;
+    let timings: [(&str, Timing); 3] = [
+        ("wall_seconds", |o| o.wall_seconds),
+        ("cpu_seconds", |o| o.cpu_seconds),
+        ("prepare_seconds", |o| o.prepare_seconds),
+    ];
+    for (name, timing) in timings {
+        let values: Vec<f64> = runs.iter().map(|(_, r)| timing(&r.output)).collect();
+        columns.push(Column::new(name.into(), values));
+    }
+    columns.push(Column::new(
+        "status".into(),
+        runs.iter()
+            .map(|(_, r)| r.status.clone())
+            .collect::<Vec<String>>(),
+    ));
+    DataFrame::new(runs.len(), columns).context("cannot build runs.parquet")
+}
+
+/// `name`, or if that column is taken `result.<name>` (then `result.<name>.2`,
+/// `.3`, ...): the same names in the same order always get the same columns.
+fn free_name(name: &str, taken: &mut HashSet<String>) -> String {
+    let mut candidate = name.to_string();
+    let mut k = 1;
+    while taken.contains(&candidate) {
+        k += 1;
+        candidate = match k {
+            2 => format!("result.{name}"),
+            _ => format!("result.{name}.{}", k - 1),
+        };
+    }
+    taken.insert(candidate.clone());
+    candidate
+}
+
+fn series_table(runs: &[(RunSpec, RunRecord)]) -> anyhow::Result<DataFrame> {
+    let (mut id, mut t, mut obs, mut value) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    for (spec, r) in runs {
+        for s in &r.output.series {
+            for (&ti, &vi) in s.t.iter().zip(&s.value) {
+                id.push(spec.run_id);
+                t.push(ti);
+                obs.push(s.observable.clone());
+                value.push(vi);
+            }
+        }
+    }
+    let n = id.len();
+    DataFrame::new(
+        n,
+        vec![
+            Column::new("run_id".into(), id),
+            Column::new("t".into(), t),
+            Column::new("observable".into(), obs),
+            Column::new("value".into(), value),
+        ],
+    )
+    .context("cannot build series.parquet")
+}
+
+fn histograms_table(runs: &[(RunSpec, RunRecord)]) -> anyhow::Result<DataFrame> {
+    let (mut id, mut obs, mut lo, mut hi, mut count) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    for (spec, r) in runs {
+        for h in &r.output.histograms {
+            for ((&l, &u), &c) in h.lo.iter().zip(&h.hi).zip(&h.count) {
+                id.push(spec.run_id);
+                obs.push(h.observable.clone());
+                lo.push(l);
+                hi.push(u);
+                count.push(c);
+            }
+        }
+    }
+    let n = id.len();
+    DataFrame::new(
+        n,
+        vec![
+            Column::new("run_id".into(), id),
+            Column::new("observable".into(), obs),
+            Column::new("lo".into(), lo),
+            Column::new("hi".into(), hi),
+            Column::new("count".into(), count),
+        ],
+    )
+    .context("cannot build histograms.parquet")
+}
+
+/// summary.parquet; parameter columns come from the plan (so text values
+/// stay text), the cost from the successful runs behind each point.
+fn summary_table(
+    runs: &[(RunSpec, RunRecord)],
+    summary: &[SummaryRow],
+) -> anyhow::Result<DataFrame> {
+    let mut cost: BTreeMap<u64, (f64, f64)> = BTreeMap::new();
+    for (spec, record) in runs.iter().filter(|(_, r)| r.ok()) {
+        let c = cost.entry(spec.point_id).or_default();
+        c.0 += record.output.cpu_seconds;
+        c.1 += record.output.wall_seconds;
+    }
+    let by_point: BTreeMap<u64, &RunSpec> = runs.iter().map(|(s, _)| (s.point_id, s)).collect();
+    let point_specs: Vec<&RunSpec> = summary
+        .iter()
+        .filter_map(|r| by_point.get(&r.point_id).copied())
+        .collect();
+    let params: Vec<&[(String, toml::Value)]> = summary
+        .iter()
+        .map(|r| {
+            by_point
+                .get(&r.point_id)
+                .map_or(&[][..], |s| s.params.as_slice())
+        })
+        .collect();
+    let mut columns = vec![Column::new(
+        "point_id".into(),
+        summary.iter().map(|r| r.point_id).collect::<Vec<u64>>(),
+    )];
+    columns.extend(param_columns(&point_specs, &params));
+    let f = |name: &str, get: &dyn Fn(&SummaryRow) -> f64| {
+        Column::new(name.into(), summary.iter().map(get).collect::<Vec<f64>>())
+    };
+    columns.push(Column::new(
+        "result".into(),
+        summary
+            .iter()
+            .map(|r| r.result.clone())
+            .collect::<Vec<String>>(),
+    ));
+    columns.push(Column::new(
+        "n".into(),
+        summary.iter().map(|r| r.n).collect::<Vec<u64>>(),
+    ));
+    columns.push(f("mean", &|r| r.mean));
+    columns.push(f("std", &|r| r.std));
+    columns.push(f("stderr", &|r| r.stderr));
+    columns.push(f("ci_low", &|r| r.ci_low));
+    columns.push(f("ci_high", &|r| r.ci_high));
+    columns.push(Column::new(
+        "theory".into(),
+        summary
+            .iter()
+            .map(|r| r.theory)
+            .collect::<Vec<Option<f64>>>(),
+    ));
+    columns.push(Column::new(
+        "z".into(),
+        summary.iter().map(|r| r.z).collect::<Vec<Option<f64>>>(),
+    ));
+    let point_cost = |r: &SummaryRow| cost.get(&r.point_id).copied().unwrap_or_default();
+    columns.push(f("cpu_seconds", &|r| point_cost(r).0));
+    columns.push(f("wall_seconds", &|r| point_cost(r).1));
+    columns.push(Column::new(
+        "collisions".into(),
+        summary.iter().map(|r| r.collisions).collect::<Vec<u64>>(),
+    ));
+    DataFrame::new(summary.len(), columns).context("cannot build summary.parquet")
+}

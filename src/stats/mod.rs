@@ -1,0 +1,4 @@
+//! Estimators and error bars shared by studies, and numbers as text.
+
+pub mod format;
+pub mod summary;

@@ -1,0 +1,127 @@
+//! Studies as plug-ins. A study is one folder that implements `Study`: its
+//! options, what it needs observed, what it adds to each run, the theory for
+//! its results and its report section. Registering one is a line in
+//! `REGISTRY`; a descriptor asks for it as `[analysis.<name>]`.
+
+pub mod options;
+pub mod piston;
+
+use crate::model::descriptor::Descriptor;
+use crate::model::need::Need;
+use crate::model::report::ReportSection;
+use crate::model::run_output::RunOutput;
+use crate::model::run_spec::RunSpec;
+use crate::observe::Context;
+use crate::scene::Built;
+pub use options::StudyOption;
+
+/// Every study bonkers knows: one line each.
+pub const REGISTRY: &[&dyn Study] = &[&piston::Piston];
+
+/// A finished run as a study sees it: its descriptor, the scene as built
+/// (in its dimension) and what the run measured.
+pub struct Finished<'a> {
+    pub descriptor: &'a Descriptor,
+    pub start: Start<'a>,
+    pub context: &'a Context<'a>,
+}
+
+/// The scene a run started from, in its dimension.
+#[derive(Clone, Copy)]
+pub enum Start<'a> {
+    Rods(&'a Built<1>),
+    Disks(&'a Built<2>),
+    Spheres(&'a Built<3>),
+}
+
+impl<'a> Start<'a> {
+    /// The scene of a run in dimension `D` (1, 2 or 3: the engine has no other).
+    pub fn of<const D: usize>(built: &'a Built<D>) -> Start<'a> {
+        let any: &dyn std::any::Any = built;
+        match (any.downcast_ref(), any.downcast_ref(), any.downcast_ref()) {
+            (Some(b), _, _) => Start::Rods(b),
+            (_, Some(b), _) => Start::Disks(b),
+            (_, _, Some(b)) => Start::Spheres(b),
+            _ => unreachable!("scenes have 1, 2 or 3 dimensions"),
+        }
+    }
+}
+
+pub trait Study: Sync {
+    /// The name a descriptor uses: `[analysis.<name>]`.
+    fn name(&self) -> &'static str;
+    /// One line for `study list` and docs/descriptor.md.
+    fn about(&self) -> &'static str;
+    fn options(&self) -> &'static [StudyOption] {
+        &[]
+    }
+    /// What the scene and run must give it (checked before anything runs).
+    fn needs(&self) -> &'static [Need] {
+        &[]
+    }
+    /// Series observables every run records for it, beside those the
+    /// descriptor asks for.
+    fn series(&self) -> &'static [&'static str] {
+        &[]
+    }
+    /// The scalar results it adds to each run; its section presents them.
+    fn results(&self) -> &'static [&'static str];
+    /// Add this study's results to a finished run's output.
+    fn per_run(&self, run: &Finished, out: &mut RunOutput) -> Result<(), String>;
+    /// Theory for one of its results at a run's descriptor (sweep values
+    /// applied), or None where none applies.
+    fn theory(&self, _d: &Descriptor, _result: &str) -> Option<f64> {
+        None
+    }
+    /// Its part of the report, from the runs of the plan.
+    fn section(
+        &self,
+        d: &Descriptor,
+        runs: &[(RunSpec, RunOutput)],
+    ) -> anyhow::Result<ReportSection>;
+}
+
+pub fn find(name: &str) -> Option<&'static dyn Study> {
+    REGISTRY.iter().copied().find(|s| s.name() == name)
+}
+
+pub fn names() -> Vec<String> {
+    REGISTRY.iter().map(|s| s.name().to_string()).collect()
+}
+
+/// The studies a descriptor asks for, in its order (unknown names were
+/// refused by the descriptor checks).
+pub fn named(d: &Descriptor) -> impl Iterator<Item = &'static dyn Study> + '_ {
+    d.analysis.keys().filter_map(|name| find(name))
+}
+
+/// Series the named studies need, beside those the descriptor asks for.
+pub fn series(d: &Descriptor) -> Vec<&'static str> {
+    let mut all: Vec<&'static str> = Vec::new();
+    for name in named(d).flat_map(|s| s.series().iter().copied()) {
+        if !all.contains(&name) {
+            all.push(name);
+        }
+    }
+    all
+}
+
+/// Each named study's results for a finished run.
+pub fn per_run(run: &Finished, out: &mut RunOutput) -> Result<(), String> {
+    named(run.descriptor).try_for_each(|s| s.per_run(run, out))
+}
+
+/// Theory for a result, from the named study that gives it.
+pub fn theory(d: &Descriptor, result: &str) -> Option<f64> {
+    named(d)
+        .filter(|s| s.results().contains(&result))
+        .find_map(|s| s.theory(d, result))
+}
+
+/// The named studies' report sections, in descriptor order.
+pub fn sections(
+    d: &Descriptor,
+    runs: &[(RunSpec, RunOutput)],
+) -> anyhow::Result<Vec<ReportSection>> {
+    named(d).map(|s| s.section(d, runs)).collect()
+}
