@@ -3,6 +3,7 @@
 
 use crate::descriptor::errors::StudyError;
 use crate::descriptor::load::{Loaded, show};
+use crate::descriptor::sweep;
 use crate::model::run_spec::RunSpec;
 use crate::runner::estimate::{self, RunCost};
 use crate::runner::pipeline::{self, StudyOptions};
@@ -159,37 +160,50 @@ fn validate(a: &PlanArgs) -> Result<i32, StudyError> {
 /// on `threads` threads.
 pub fn describe_plan(loaded: &Loaded, specs: &[RunSpec], threads: usize) -> String {
     let d = &loaded.descriptor;
-    let (points, _) = plan::count(loaded);
+    let (points, _) = sweep::count(loaded);
     let mut out = format!("{}: ok — {}\n", loaded.file, d.study.name);
     if let Some(sweep) = &d.sweep {
         out += &format!("  sweep ({:?}):\n", sweep.mode).to_lowercase();
         for (key, values) in &sweep.parameters {
-            let v: Vec<String> = plan::expand_values(values).iter().map(show).collect();
+            let v: Vec<String> = sweep::expand_values(values).iter().map(show).collect();
             out += &format!("    {key} = [{}]\n", v.join(", "));
         }
     }
+    let cases = d.case.len() as u64;
+    let cases_text = if cases > 0 {
+        let names: Vec<&str> = d.case.iter().map(|c| c.name.as_str()).collect();
+        format!(" and {cases} case(s) ({})", names.join(", "))
+    } else {
+        String::new()
+    };
     out += &format!(
-        "  points: {points}, replicas: {}, runs: {}\n",
+        "  points: {}{cases_text}, replicas: {}, runs: {}\n",
+        points - cases,
         d.study.replicas,
         specs.len()
     );
-    // One estimate per point: replicas differ only in their seeds.
-    let mut costs = Vec::new();
+    // One estimate per point (replicas differ only in their seeds), times its runs.
+    let mut costs: Vec<(Option<RunCost>, f64)> = Vec::new();
     for (i, spec) in specs.iter().enumerate() {
         if i == 0 || specs[i - 1].point_id != spec.point_id {
-            costs.push(estimate::run_cost(&spec.descriptor));
+            costs.push((estimate::run_cost(&spec.descriptor), 0.0));
+        }
+        if let Some(last) = costs.last_mut() {
+            last.1 += 1.0;
         }
     }
-    let replicas = f64::from(d.study.replicas);
-    let known: Vec<RunCost> = costs.iter().flatten().copied().collect();
+    let known: Vec<(RunCost, f64)> = costs
+        .iter()
+        .filter_map(|(c, n)| Some(((*c)?, *n)))
+        .collect();
     if known.is_empty() || known.len() < costs.len() {
         out += "  estimated cost: unknown (a scene could not be resolved)\n";
         return out;
     }
-    let collisions: f64 = known.iter().map(|c| c.collisions).sum::<f64>() * replicas;
-    let seconds: f64 = known.iter().map(RunCost::seconds).sum::<f64>() * replicas;
+    let collisions: f64 = known.iter().map(|(c, n)| c.collisions * n).sum();
+    let seconds: f64 = known.iter().map(|(c, n)| c.seconds() * n).sum();
     let busy = threads.min(specs.len()).max(1);
-    let dims: BTreeSet<usize> = known.iter().map(|c| c.dimension).collect();
+    let dims: BTreeSet<usize> = known.iter().map(|(c, _)| c.dimension).collect();
     let rates: Vec<String> = dims
         .iter()
         .map(|&dim| {

@@ -24,7 +24,8 @@ fn quickstart_runs_and_its_tables_read_back() {
         assert!(out.join(file).is_file(), "{file} missing");
     }
     let runs = read_parquet(&out.join("runs.parquet")).unwrap();
-    assert_eq!(runs.height(), 16);
+    // 2 sweep points x 8 replicas, and MacKay's case x 4.
+    assert_eq!(runs.height(), 16 + 4);
     let status = runs.column("status").unwrap().str().unwrap();
     assert!((0..status.len()).all(|k| status.get(k) == Some("ok")));
     let summary = read_parquet(&out.join("summary.parquet")).unwrap();

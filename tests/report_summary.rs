@@ -19,6 +19,7 @@ fn run(point: u64, replica: u32, mass: f64, scalars: &[(&str, f64)]) -> (RunSpec
         replica,
         seed: 7 + point * 100 + u64::from(replica),
         params: vec![("scene.piston.mass".into(), toml::Value::Float(mass))],
+        case: None,
         descriptor: descriptor(),
     };
     let out = RunOutput {

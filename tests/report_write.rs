@@ -2,8 +2,9 @@
 //! well-formed SVG, and no panics on NaN, failures or degenerate data.
 //! Set BONKERS_KEEP_REPORT=<dir> to keep the full demo report for viewing.
 
+use bonkers::model::chart::{ChartSpec, Layer, Paint};
 use bonkers::model::descriptor::Descriptor;
-use bonkers::model::report::ReportSection;
+use bonkers::model::report::{Figure, ReportSection};
 use bonkers::model::run_output::{Histogram, RunOutput, Series};
 use bonkers::model::run_spec::RunSpec;
 use bonkers::report::{ReportMeta, write};
@@ -58,6 +59,7 @@ fn swept_runs() -> Vec<(RunSpec, RunOutput)> {
                         ("scene.piston.mass".into(), toml::Value::Float(mass)),
                         ("scene.species.0.count".into(), toml::Value::Integer(count)),
                     ],
+                    case: None,
                     descriptor: base.clone(),
                 };
                 let out = RunOutput {
@@ -194,11 +196,26 @@ fn full_report_writes_every_file() {
     std::fs::create_dir_all(dir).expect("out dir");
     let runs = swept_runs();
     let summary = summary_with_theory(&runs);
-    std::fs::write(dir.join("extra.svg"), "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"10\" height=\"10\"><rect width=\"10\" height=\"10\"/></svg>").expect("extra figure");
+    // A study's section hands its figure over as chart data: the report renders it.
+    let chart = ChartSpec {
+        title: "piston path".into(),
+        layers: vec![Layer::Line {
+            points: vec![(0.0, 1.0), (1.0, 2.0)],
+            paint: Paint::solid((0, 0, 0)),
+            width: 1,
+            dashed: false,
+            label: None,
+        }],
+        ..Default::default()
+    };
     let sections = vec![ReportSection {
         title: "Space-time diagram".into(),
-        markdown: "The piston **oscillates**; see `runs.parquet` and <this>.\n\n| a | b |\n|---|---|\n| 1 | 2 |".into(),
-        figures: vec![("extra.svg".into(), "an extra figure".into())],
+        markdown: "The piston **oscillates**; see `runs.parquet` and <this>.\n\n| a | b |\n|---|---|\n| 1 | 2 |\n\n![an extra figure](extra.svg)".into(),
+        figures: vec![Figure {
+            file: "extra.svg".into(),
+            chart,
+        }],
+        presents: Vec::new(),
     }];
     let d = descriptor(SWEPT);
     write(dir, &d, &runs, &summary, &sections, &meta(vec![])).expect("report written");
@@ -210,6 +227,7 @@ fn full_report_writes_every_file() {
         "scalar_biased.svg",
         "series_piston_x.svg",
         "hist_vx.svg",
+        "extra.svg",
     ] {
         assert!(dir.join(f).is_file(), "{f} written");
     }
@@ -295,6 +313,7 @@ fn degenerate_data_gives_placeholders_not_panics() {
         replica,
         seed: 5,
         params: vec![],
+        case: None,
         descriptor: d.clone(),
     };
     let empty_series = Series {

@@ -115,7 +115,10 @@ fn help_and_list_exit_0() {
 fn validate_estimates_collisions_and_time_for_preset_scenes() {
     let (code, out, _) = study(&["validate", "studies/quickstart.toml"]);
     assert_eq!(code, 0);
-    assert!(out.contains("runs: 16"), "{out}");
+    assert!(
+        out.contains("points: 2 and 1 case(s) (mackay), replicas: 8, runs: 20"),
+        "{out}"
+    );
     assert!(out.contains("estimated collisions: ~"), "{out}");
     assert!(out.contains("estimated time: ~"), "{out}");
     assert!(out.contains("an estimate"), "{out}");

@@ -298,8 +298,8 @@ proptest! {
             text = mutate(&text, pos, kind, byte);
         }
         if let Ok(loaded) = parse("p.toml", &text) {
-            let _ = bonkers::runner::plan::count(&loaded);
-            if bonkers::runner::plan::count(&loaded).1 < 10_000 {
+            let _ = bonkers::descriptor::sweep::count(&loaded);
+            if bonkers::descriptor::sweep::count(&loaded).1 < 10_000 {
                 let _ = bonkers::runner::plan::plan(&loaded);
             }
             let _ = quick(&loaded);

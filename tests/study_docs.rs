@@ -3,8 +3,8 @@
 //! catalogue lists every observable and analysis option bonkers knows.
 
 use bonkers::descriptor::load::{parse, quick};
+use bonkers::descriptor::sweep::count;
 use bonkers::runner::pipeline::{StudyOptions, run_study};
-use bonkers::runner::plan::count;
 use bonkers::runner::progress::ProgressMode;
 use bonkers::runner::store::read_parquet;
 use bonkers::studies::REGISTRY;
@@ -28,15 +28,17 @@ fn example() -> String {
 #[test]
 fn the_documented_example_is_valid() {
     let loaded = parse("docs/descriptor.md", &example()).unwrap();
-    assert_eq!(count(&loaded), (6, 48));
+    // 6 sweep points x 8 replicas and one case x 4.
+    assert_eq!(count(&loaded), (6 + 1, 48 + 4));
     let q = quick(&loaded).unwrap();
-    assert_eq!(count(&q), (4, 8));
+    assert_eq!(count(&q), (4 + 1, 8 + 4));
     // Every name is one bonkers knows (parse checks them; these make sure
     // the example exercises each kind of name).
     let d = &loaded.descriptor;
     assert!(!d.observe.series.is_empty() && !d.observe.scalars.is_empty());
     assert!(!d.observe.histograms.is_empty());
     assert!(d.analysis["piston"].contains_key("window_periods"));
+    assert_eq!(d.case.len(), 1);
 }
 
 /// The example's --quick version on the real engine: every run succeeds and
@@ -64,7 +66,7 @@ fn the_documented_example_runs() {
         &AtomicBool::new(false),
     )
     .unwrap();
-    assert_eq!((outcome.planned, outcome.failed), (8, 0));
+    assert_eq!((outcome.planned, outcome.failed), (8 + 4, 0));
     let runs = read_parquet(&out.join("runs.parquet")).unwrap();
     for column in [
         "wall_pressure",

@@ -3,7 +3,8 @@
 mod study_common;
 
 use bonkers::descriptor::load::{apply_overrides, parse};
-use bonkers::runner::plan::{count, expand_values, plan};
+use bonkers::descriptor::sweep::{count, expand_values};
+use bonkers::runner::plan::plan;
 use bonkers::runner::seeds::run_seed;
 use std::collections::HashSet;
 use study_common::PISTON;

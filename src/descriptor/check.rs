@@ -23,7 +23,7 @@ pub fn check(loaded: &Loaded) -> Result<(), DescriptorError> {
         .parameters
         .iter()
         .map(|(k, v)| {
-            let values = crate::runner::plan::expand_values(v);
+            let values = crate::descriptor::sweep::expand_values(v);
             let picked = representatives(v, &values);
             (k, values, picked)
         })

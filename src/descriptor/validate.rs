@@ -194,7 +194,7 @@ pub fn sweep(d: &Descriptor) -> Check {
                 if r.steps == 0 {
                     return bad(at, "range needs `steps >= 1`", None);
                 }
-                if r.steps as u64 > crate::runner::plan::HARD_LIMIT {
+                if r.steps as u64 > crate::descriptor::sweep::HARD_LIMIT {
                     return bad(
                         at,
                         format!("{} steps is more than a study can run", r.steps),
@@ -247,6 +247,46 @@ pub fn sweep(d: &Descriptor) -> Check {
             ),
             Some("give every parameter the same number of values, or use `mode = \"product\"`"),
         );
+    }
+    Ok(())
+}
+
+/// `[[case]]` number `i`: a name that can label its rows, used once, replicas
+/// if given at least 1, keys that a sweep could set.
+pub fn case(d: &Descriptor, i: usize) -> Check {
+    let case = &d.case[i];
+    let at = format!("case.{i}");
+    let ok = !case.name.is_empty()
+        && case
+            .name
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_".contains(c));
+    if !ok {
+        return bad(
+            format!("{at}.name"),
+            format!("{:?} cannot name a case", case.name),
+            Some("use letters, digits, `-` or `_`, e.g. `name = \"mackay\"`"),
+        );
+    }
+    if d.case[..i].iter().any(|c| c.name == case.name) {
+        return bad(
+            format!("{at}.name"),
+            format!("case \"{}\" is defined twice", case.name),
+            Some("give each [[case]] its own name"),
+        );
+    }
+    if case.replicas == Some(0) {
+        return bad(
+            format!("{at}.replicas"),
+            "must be at least 1",
+            Some("leave it out to run `study.replicas` replicas"),
+        );
+    }
+    for key in case.set.keys() {
+        sweep_key(key).map_err(|p| Problem {
+            key: format!("{at}.set"),
+            ..p
+        })?;
     }
     Ok(())
 }

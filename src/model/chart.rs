@@ -90,3 +90,21 @@ impl ChartSpec {
         x.is_finite() && y.is_finite() && (!self.x_log || x > 0.0) && (!self.y_log || y > 0.0)
     }
 }
+
+/// Okabe and Ito's palette: told apart with the common colour-vision
+/// deficiencies, readable on white (its yellow last: faint on white).
+const PALETTE: [(u8, u8, u8); 8] = [
+    (0, 114, 178),
+    (213, 94, 0),
+    (0, 158, 115),
+    (230, 159, 0),
+    (204, 121, 167),
+    (86, 180, 233),
+    (0, 0, 0),
+    (240, 228, 66),
+];
+
+/// The `i`th colour of the palette, cycling.
+pub fn colour(i: usize) -> Paint {
+    Paint::solid(PALETTE[i % PALETTE.len()])
+}

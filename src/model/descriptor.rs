@@ -18,6 +18,10 @@ pub struct Descriptor {
     /// Named analyses, each a table of its own options (may be empty).
     #[serde(default)]
     pub analysis: BTreeMap<String, toml::Table>,
+    /// Showcase cases beside the sweep, each the descriptor with some keys
+    /// set, planned, run, stored and resumed like sweep points.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub case: Vec<CaseSection>,
     /// Overrides applied by `--quick`: key path -> value (e.g. "study.replicas" = 2).
     #[serde(default)]
     pub quick: BTreeMap<String, toml::Value>,
@@ -37,6 +41,22 @@ pub struct StudySection {
 
 fn default_replicas() -> u32 {
     1
+}
+
+/// `[[case]]`: one named run configuration beside the sweep (a study's
+/// pictures of one system, say). Its runs start from the descriptor without
+/// its sweep, with `set` applied like a sweep point's values.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CaseSection {
+    /// Names the case in the tables (`case` column) and for its study.
+    pub name: String,
+    /// Replicas of this case; default: `study.replicas`.
+    #[serde(default)]
+    pub replicas: Option<u32>,
+    /// Key path -> value, e.g. `"run.duration" = 200.0`.
+    #[serde(default)]
+    pub set: BTreeMap<String, toml::Value>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -99,6 +119,14 @@ pub struct RunSection {
     /// Interval between samples (the seeds' clock Tc).
     #[serde(default)]
     pub sample_every: Option<f64>,
+    /// Store every sample of each series; by default `series.parquet` keeps
+    /// an evenly strided subset of at most 4000 points per series and run.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub full_series: bool,
+}
+
+fn is_false(b: &bool) -> bool {
+    !*b
 }
 
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]

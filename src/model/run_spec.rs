@@ -2,8 +2,8 @@
 
 use crate::model::descriptor::Descriptor;
 
-/// A sweep point x replica, with its own seed and the descriptor as it applies
-/// to this point (sweep values already substituted).
+/// A sweep point (or a case) x replica, with its own seed and the descriptor
+/// as it applies to this point (sweep values or the case's keys already set).
 #[derive(Debug, Clone, PartialEq)]
 pub struct RunSpec {
     pub run_id: u64,
@@ -11,7 +11,9 @@ pub struct RunSpec {
     pub replica: u32,
     /// Seed of this run's ChaCha stream, derived from (study seed, point, replica).
     pub seed: u64,
-    /// Swept parameters of this point: (key path, value).
+    /// Swept parameters of this point: (key path, value); empty for a case.
     pub params: Vec<(String, toml::Value)>,
+    /// The `[[case]]` this run belongs to; None for the sweep's runs.
+    pub case: Option<String>,
     pub descriptor: Descriptor,
 }

@@ -106,6 +106,10 @@ fn what_was_run(md: &mut String, inp: &Inputs) {
         length.push(format!("sampled every {}", num(s)));
     }
     let planned = inp.meta.planned_runs.max(inp.runs.len());
+    let case_runs =
+        |c: &crate::model::descriptor::CaseSection| c.replicas.unwrap_or(d.study.replicas) as usize;
+    let cases: usize = d.case.iter().map(case_runs).sum();
+    let sweep = planned.saturating_sub(cases);
     let seeds = inp.runs.iter().map(|(s, _)| s.seed);
     let (lo, hi) = seeds.fold((u64::MAX, 0), |(lo, hi), s| (lo.min(s), hi.max(s)));
     let _ = writeln!(
@@ -113,9 +117,9 @@ fn what_was_run(md: &mut String, inp: &Inputs) {
         "{} points × {} replicas = {} runs (each: {}). Study seed {}; every run has its \
          own seed{}, derived from (study seed, the point's swept values, replica): the `seed` \
          column of `runs.parquet`.\n",
-        planned / d.study.replicas.max(1) as usize,
+        sweep / d.study.replicas.max(1) as usize,
         d.study.replicas,
-        planned,
+        sweep,
         if length.is_empty() {
             "as the scene says".into()
         } else {
@@ -128,6 +132,21 @@ fn what_was_run(md: &mut String, inp: &Inputs) {
             format!(" ({lo} to {hi})")
         },
     );
+    if !d.case.is_empty() {
+        let list: Vec<String> = d
+            .case
+            .iter()
+            .map(|c| format!("`{}` ({} runs)", c.name, case_runs(c)))
+            .collect();
+        let _ = writeln!(
+            md,
+            "Beside the sweep, {} case(s) the study presents in its own section: {}; each \
+             is the descriptor without its sweep, with the case's keys set \
+             (`[[case]]` in the descriptor), seeded from its name.\n",
+            d.case.len(),
+            list.join(", ")
+        );
+    }
 }
 
 /// The conservation check every run without thermal walls makes.

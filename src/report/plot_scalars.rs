@@ -4,7 +4,8 @@
 
 use super::chart::{ChartSpec, Layer, Paint};
 use super::labels::{axis_label, short_name};
-use super::plots::{Points, colour, point_label, wants_log};
+use super::plots::{Points, point_label, wants_log};
+use crate::model::chart::colour;
 use crate::model::summary::SummaryRow;
 use std::collections::{BTreeMap, BTreeSet};
 

@@ -3,7 +3,8 @@
 
 use super::chart::{ChartSpec, Layer};
 use super::labels::axis_label;
-use super::plots::{Points, colour, evenly, point_label};
+use super::plots::{Points, evenly, point_label};
+use crate::model::chart::colour;
 use crate::model::run_output::{RunOutput, Series};
 use crate::model::run_spec::RunSpec;
 use std::collections::BTreeSet;
@@ -11,10 +12,11 @@ use std::collections::BTreeSet;
 const MAX_POINTS: usize = 6;
 const TRACES_PER_POINT: usize = 2;
 
-/// (observable, chart) for every observable any run recorded, sorted by name.
+/// (observable, chart) for every observable a run of `points` recorded, sorted by name.
 pub fn charts(runs: &[(RunSpec, RunOutput)], points: &Points) -> Vec<(String, ChartSpec)> {
     let names: BTreeSet<&str> = runs
         .iter()
+        .filter(|(s, _)| points.contains_key(&s.point_id))
         .flat_map(|(_, o)| o.series.iter().map(|s| s.observable.as_str()))
         .collect();
     let ids: Vec<u64> = points.keys().copied().collect();

@@ -2,7 +2,7 @@
 //! parameter, each time series, each histogram. Builders live in their own
 //! files; this one names, renders and writes them.
 
-use super::chart::{self, ChartSpec, Paint};
+use super::chart::{self, ChartSpec};
 use super::labels::{short_name, slug};
 use super::{plot_hist, plot_scalars, plot_series};
 use crate::files::write_atomic;
@@ -19,7 +19,8 @@ pub struct Figure {
     pub caption: String,
 }
 
-/// Swept parameters of each point, as the planner gave them.
+/// Swept parameters of each point, as the planner gave them; a case's
+/// point is labelled by its name (`case` = name).
 pub type Points = BTreeMap<u64, Vec<(String, toml::Value)>>;
 
 pub fn points(runs: &[(RunSpec, RunOutput)]) -> Points {
@@ -27,26 +28,37 @@ pub fn points(runs: &[(RunSpec, RunOutput)]) -> Points {
     for (spec, _) in runs {
         points
             .entry(spec.point_id)
-            .or_insert_with(|| spec.params.clone());
+            .or_insert_with(|| match &spec.case {
+                Some(name) => vec![("case".into(), toml::Value::String(name.clone()))],
+                None => spec.params.clone(),
+            });
     }
     points
 }
 
-/// Render and write the generic plots; returns them in report order. A
-/// result an analysis presents in its own section gets no generic plot, nor
-/// does `energy_drift` (the report gives its largest value in a line).
+/// Render and write the generic plots of the sweep; returns them in report
+/// order. A result a study presents in its own section gets no generic
+/// plot, nor does `energy_drift` (the report gives its largest value in a
+/// line); cases are their studies' to show.
 pub fn write_all(
     out_dir: &Path,
     presented: &[String],
     runs: &[(RunSpec, RunOutput)],
     summary: &[SummaryRow],
 ) -> anyhow::Result<Vec<Figure>> {
-    let points = points(runs);
+    let mut points = points(runs);
+    let cases: Vec<u64> = runs
+        .iter()
+        .filter(|(s, _)| s.case.is_some())
+        .map(|(s, _)| s.point_id)
+        .collect();
+    points.retain(|id, _| !cases.contains(id));
     let mut charts: Vec<(String, ChartSpec, String)> = Vec::new();
     let mut files = FileNames::default();
     let generic: Vec<SummaryRow> = summary
         .iter()
         .filter(|r| r.result != "energy_drift" && !presented.contains(&r.result))
+        .filter(|r| points.contains_key(&r.point_id))
         .cloned()
         .collect();
     for (name, spec) in plot_scalars::charts(&generic, &points) {
@@ -90,22 +102,6 @@ impl FileNames {
         }
         file
     }
-}
-
-/// Tableau-like colours: distinct, and readable on white.
-const PALETTE: [(u8, u8, u8); 8] = [
-    (31, 119, 180),
-    (214, 39, 40),
-    (44, 160, 44),
-    (255, 127, 14),
-    (148, 103, 189),
-    (140, 86, 75),
-    (227, 119, 194),
-    (23, 190, 207),
-];
-
-pub fn colour(i: usize) -> Paint {
-    Paint::solid(PALETTE[i % PALETTE.len()])
 }
 
 /// "mass=10, n=4" for a point's parameters ("all runs" when nothing is swept).

@@ -3,13 +3,14 @@
 
 use crate::descriptor::errors::{DescriptorError, StudyError};
 use crate::descriptor::load::{self, Loaded};
+use crate::descriptor::sweep::{self, CONFIRM_ABOVE};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::model::summary::SummaryRow;
 use crate::report::ReportMeta;
 use crate::runner::lock::OutLock;
 use crate::runner::manifest::{Manifest, RunCounts, rfc3339, version};
-use crate::runner::plan::{self, CONFIRM_ABOVE};
+use crate::runner::plan;
 use crate::runner::progress::ProgressMode;
 use crate::runner::publish::{self, Staging};
 use crate::runner::record::RunRecord;
@@ -60,7 +61,7 @@ pub fn prepare(path: &Path, replicas: Option<u32>, quick: bool) -> Result<Loaded
 
 /// Refuse plans too large to start by accident.
 pub fn confirm_size(loaded: &Loaded, yes: bool) -> Result<(), DescriptorError> {
-    let (points, runs) = plan::count(loaded);
+    let (points, runs) = sweep::count(loaded);
     if runs > CONFIRM_ABOVE && !yes {
         return Err(DescriptorError::new(
             &loaded.file,

@@ -45,13 +45,13 @@ pub struct RunnerReport {
 /// The fingerprint of a planned run: a hash of everything that decides what
 /// it computes: the bonkers version, its seed and replica, and its
 /// descriptor with the sweep values applied, less what cannot change a run
-/// (`[study]`: name, description and replica count; `[sweep]` and `[quick]`,
-/// already applied). So raising `--replicas` or inserting a sweep value
+/// (`[study]`: name, description and replica count; `[sweep]`, `[[case]]`
+/// and `[quick]`, already applied). So raising `--replicas` or inserting a sweep value
 /// reuses the runs already done.
 pub fn fingerprint(spec: &RunSpec) -> String {
     let mut run = serde_json::to_value(&spec.descriptor).unwrap_or_default();
     if let Some(sections) = run.as_object_mut() {
-        for section in ["study", "sweep", "quick"] {
+        for section in ["study", "sweep", "case", "quick"] {
             sections.remove(section);
         }
     }

@@ -132,8 +132,8 @@ fn run_in<const D: usize, N: Neighbourhood<D>>(
         context: &ctx,
     };
     studies::per_run(&finished, &mut out).map_err(|e| anyhow!("analysis: {e}"))?;
-    for series in &mut out.series {
-        thin(series);
+    if !d.run.full_series {
+        out.series.iter_mut().for_each(thin);
     }
     if let Some(prep) = &built.prepared {
         // The cost of compressing the start: collisions and density are

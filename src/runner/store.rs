@@ -92,6 +92,14 @@ fn param_columns(specs: &[&RunSpec], rows: &[&[(String, toml::Value)]]) -> Vec<C
         .collect()
 }
 
+/// The `case` column (None for the sweep's runs), if the plan has cases.
+fn case_column(specs: &[&RunSpec]) -> Option<Column> {
+    specs.iter().any(|s| s.case.is_some()).then(|| {
+        let names: Vec<Option<&str>> = specs.iter().map(|s| s.case.as_deref()).collect();
+        Column::new("case".into(), names)
+    })
+}
+
 pub fn as_f64(v: &toml::Value) -> Option<f64> {
     match v {
         toml::Value::Integer(i) => Some(*i as f64),
@@ -129,6 +137,7 @@ fn runs_table(runs: &[(RunSpec, RunRecord)]) -> anyhow::Result<DataFrame> {
         ),
     ];
     columns.extend(param_columns(&specs, &params));
+    columns.extend(case_column(&specs));
     // Scalar names in order of first appearance (deterministic: runs are in plan order).
     let mut names: Vec<&str> = Vec::new();
     for (_, r) in runs {
@@ -277,6 +286,7 @@ fn summary_table(
         summary.iter().map(|r| r.point_id).collect::<Vec<u64>>(),
     )];
     columns.extend(param_columns(&point_specs, &params));
+    columns.extend(case_column(&point_specs));
     let f = |name: &str, get: &dyn Fn(&SummaryRow) -> f64| {
         Column::new(name.into(), summary.iter().map(get).collect::<Vec<f64>>())
     };

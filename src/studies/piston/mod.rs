@@ -2,6 +2,7 @@
 //! oscillates, against adiabatic and isothermal theory; how long it takes to
 //! give its excess energy to the gases; what share it keeps in the end.
 
+mod cases;
 mod estimators;
 mod pictures;
 mod points;
@@ -116,10 +117,10 @@ impl Study for Piston {
     }
     fn section(
         &self,
-        d: &Descriptor,
+        _: &Descriptor,
         runs: &[(RunSpec, RunOutput)],
     ) -> anyhow::Result<ReportSection> {
-        section(d, runs)
+        section(runs)
     }
 }
 
@@ -308,27 +309,15 @@ fn gas_counts(scene: &crate::model::scene::SceneSpec) -> Option<(usize, [usize; 
     Some((d, n))
 }
 
-/// MacKay's pictures and answer (if the sweep has rods), the 2D wall's (if
-/// it has disks), where the theory holds, how the piston relaxes, and how
-/// each number was measured.
-fn section(d: &Descriptor, runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
+/// MacKay's pictures and answer and the 2D wall's (from the descriptor's
+/// `[[case]]`s of those names, where it has them), where the theory holds
+/// across the sweep, how the piston relaxes, and how each number was
+/// measured.
+fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
     let mut figures = Vec::new();
     let figures = &mut figures;
-    let dimensions: std::collections::BTreeSet<usize> = runs
-        .iter()
-        .filter_map(|(spec, _)| {
-            crate::scene::resolve(&spec.descriptor.scene)
-                .ok()?
-                .dimension
-        })
-        .collect();
-    let mut md = String::new();
-    if dimensions.contains(&1) {
-        md.push_str(&pictures::mackay_case(d, figures)?);
-    }
-    if dimensions.contains(&2) {
-        md.push_str(&wall::wall_cases(d, figures)?);
-    }
+    let mut md = pictures::mackay_case(runs, figures)?;
+    md.push_str(&wall::wall_cases(runs, figures)?);
     md.push_str(&regimes::regimes(runs, figures)?);
     md.push_str(METHODS);
     Ok(ReportSection {

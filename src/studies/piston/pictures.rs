@@ -1,38 +1,29 @@
-//! MacKay's own eleven-particle case: his pictures (space-time diagram, the
-//! energy of each gas and of the piston over 40 and 200 time units) with the
-//! adiabatic prediction drawn in, and his question answered in numbers.
+//! MacKay's own eleven-particle case (the `[[case]]` named "mackay"): his
+//! pictures (space-time diagram, the energy of each gas and of the piston
+//! over the first 40 time units and the whole run) with the adiabatic
+//! prediction drawn in, and his question answered in numbers.
 
-use crate::engine::{Rods, Stop};
+use super::cases;
 use crate::model::chart::{ChartSpec, Layer, Paint};
-use crate::model::descriptor::Descriptor;
 use crate::model::report::Figure;
 use crate::model::run_output::RunOutput;
-use crate::observe::{self, Context};
-use crate::runner::seeds::{fnv1a, run_seed};
-use crate::scene::{self, Built};
+use crate::scene::Built;
 use crate::stats::format::{count, num, pm};
 use crate::stats::summary::Stats;
-use crate::studies::piston::state::{Geometry, SERIES, Samples};
-use crate::studies::piston::{DRAWS, Options, measure};
+use crate::studies::piston::DRAWS;
+use crate::studies::piston::state::{Geometry, Samples};
 use crate::theory::piston::Law;
 use crate::theory::piston_equilibrium::oscillator_share;
-use rand::SeedableRng;
-use rand_chacha::ChaCha8Rng;
 use std::fmt::Write;
 
-const BLUE: (u8, u8, u8) = (31, 119, 180);
-const GREEN: (u8, u8, u8) = (44, 160, 44);
-pub(super) const PURPLE: (u8, u8, u8) = (128, 0, 128);
+const BLUE: (u8, u8, u8) = (0, 114, 178);
+const GREEN: (u8, u8, u8) = (0, 158, 115);
+pub(super) const PURPLE: (u8, u8, u8) = (204, 121, 167);
 pub(super) const BLACK: (u8, u8, u8) = (0, 0, 0);
 pub(super) const GREY: (u8, u8, u8) = (150, 150, 150);
 
 /// A predicted piston path (t, x), its colour and its legend.
 pub(super) type PredictedPath = (Vec<(f64, f64)>, (u8, u8, u8), &'static str);
-
-/// Replicas of MacKay's case (they differ in the masses drawn from his ranges).
-const REPLICAS: u32 = 16;
-const DURATION: f64 = 200.0;
-const SAMPLE_EVERY: f64 = 0.05;
 
 pub(super) fn colour(species: &str) -> (u8, u8, u8) {
     match species {
@@ -42,73 +33,24 @@ pub(super) fn colour(species: &str) -> (u8, u8, u8) {
     }
 }
 
-/// One simulated replica of the `mackay-piston` preset.
-struct Replica {
-    built: Built<1>,
-    out: RunOutput,
-    scalars: Vec<(&'static str, f64)>,
-    seconds: f64,
-}
-
-fn simulate(seed: u64, options: &Options, positions: bool) -> anyhow::Result<Replica> {
-    let started = std::time::Instant::now();
-    let spec = scene::presets::find("mackay-piston")
-        .ok_or_else(|| anyhow::anyhow!("mackay-piston preset missing"))?;
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let built = scene::build::<1>(&spec, &mut rng).map_err(|e| anyhow::anyhow!(e))?;
-    let mut names: Vec<String> = SERIES.iter().map(|s| s.to_string()).collect();
-    if positions {
-        names.push("positions".into());
-    }
-    let mut observers =
-        observe::build::<1>(&names, &[], &[], built.piston).map_err(|e| anyhow::anyhow!(e))?;
-    observers.recording = true;
-    let mut sim: Rods<_> = Rods::new(built.particles.clone(), built.sim_box, observers, 0)?;
-    sim.sample_every(Some(SAMPLE_EVERY));
-    sim.run(Stop::Time(DURATION));
-    let mut out = RunOutput {
-        collisions: sim.counts.collisions,
-        ..Default::default()
+/// The `[[case]]` that runs MacKay's own eleven particles.
+pub const CASE: &str = "mackay";
+/// MacKay's case from its runs: his pictures, and his question answered.
+/// Empty if the plan has no such case.
+pub fn mackay_case(all: &[cases::Run], figures: &mut Vec<Figure>) -> anyhow::Result<String> {
+    let replicas = cases::runs(all, CASE);
+    let Some((spec, out)) = replicas.first().copied() else {
+        return Ok(String::new());
     };
-    let ctx = Context {
-        species: &built.species,
-        piston: built.piston,
-        duration: DURATION,
-        volume: built.sim_box.volume(),
-        wall_area: 2.0,
-        dimension: 1,
-        degrees_of_freedom: built.particles.len() as f64,
-    };
-    sim.into_observer().finish(&ctx, &mut out);
-    let geometry = Geometry::of(&built).ok_or_else(|| anyhow::anyhow!("no piston"))?;
-    let samples = Samples::of(&out).map_err(|e| anyhow::anyhow!(e))?;
-    let scalars = measure(&geometry, &samples, options);
-    Ok(Replica {
-        built,
-        out,
-        scalars,
-        seconds: started.elapsed().as_secs_f64(),
-    })
-}
-
-/// Simulate MacKay's case, draw his pictures, and answer his question.
-pub fn mackay_case(d: &Descriptor, figures: &mut Vec<Figure>) -> anyhow::Result<String> {
-    let options = Options::of(d);
-    let base = d.study.seed ^ fnv1a(b"mackay-piston");
-    let replicas: Vec<Replica> = (0..REPLICAS)
-        .map(|r| simulate(run_seed(base, 0, r), &options, r == 0))
-        .collect::<anyhow::Result<_>>()?;
-    let stat = |name: &str| {
-        let v: Vec<f64> = replicas
-            .iter()
-            .filter_map(|r| r.scalars.iter().find(|(n, _)| *n == name).map(|p| p.1))
-            .filter(|v| v.is_finite())
-            .collect();
-        Stats::of(&v)
-    };
-    let first = &replicas[0];
+    let stat = |name: &str| cases::stat(&replicas, name);
+    let built = cases::start::<1>(spec)?;
+    let first = First { built, out };
+    let run = &spec.descriptor.run;
+    let duration = run.duration.unwrap_or(f64::NAN);
+    let sample_every = run.sample_every.unwrap_or(f64::NAN);
+    let n_runs = replicas.len();
     let geometry = Geometry::of(&first.built).ok_or_else(|| anyhow::anyhow!("no piston"))?;
-    let samples = Samples::of(&first.out).map_err(|e| anyhow::anyhow!(e))?;
+    let samples = Samples::of(first.out).map_err(|e| anyhow::anyhow!(e))?;
     let p = first.built.piston.unwrap_or(0);
     let start = geometry.system(
         samples.x[0],
@@ -121,10 +63,11 @@ pub fn mackay_case(d: &Descriptor, figures: &mut Vec<Figure>) -> anyhow::Result<
         (Law::Adiabatic, BLACK, "adiabatic theory (γ = 3)"),
         (Law::Isothermal, GREY, "isothermal (γ = 1)"),
     ]
-    .map(|(law, rgb, label)| (start.trajectory(law, DURATION, 0.02), rgb, label));
+    .map(|(law, rgb, label)| (start.trajectory(law, duration, 0.02), rgb, label));
     let mut md = String::new();
-    for horizon in [40.0, 200.0] {
-        let name = spacetime(first, &paths, horizon, figures)?;
+    let horizons = [40.0_f64.min(duration), duration];
+    for horizon in horizons {
+        let name = spacetime(&first, &paths, horizon, figures)?;
         let _ = writeln!(
             md,
             "![MacKay's case, first {horizon} time units: positions of all particles (time up; light gas blue, heavier gas green, piston purple) and the piston's path predicted by the adiabatic (black dashed) and isothermal (grey dashed) oscillators from the same start.]({name})\n"
@@ -133,7 +76,7 @@ pub fn mackay_case(d: &Descriptor, figures: &mut Vec<Figure>) -> anyhow::Result<
     let total = samples.total[0];
     let (share_eq, _) = oscillator_share(1, geometry.particles[0], geometry.particles[1], DRAWS);
     let energy = samples.oscillator_energy(&geometry);
-    for horizon in [40.0, 200.0] {
+    for horizon in horizons {
         let name = format!("mackay_energy_{horizon}.svg");
         let oscillator = Oscillator {
             t: &samples.t,
@@ -141,7 +84,7 @@ pub fn mackay_case(d: &Descriptor, figures: &mut Vec<Figure>) -> anyhow::Result<
             equilibrium: share_eq * total,
         };
         energies(
-            &first.out,
+            first.out,
             &oscillator,
             horizon,
             &format!("Kinetic energy of each gas and of the piston, first {horizon} time units"),
@@ -154,8 +97,7 @@ pub fn mackay_case(d: &Descriptor, figures: &mut Vec<Figure>) -> anyhow::Result<
         );
     }
 
-    let cost_collisions: u64 = replicas.iter().map(|r| r.out.collisions).sum();
-    let cost_seconds: f64 = replicas.iter().map(|r| r.seconds).sum();
+    let (cost_collisions, cost_seconds) = cases::cost(&replicas);
     let measured = stat("frequency");
     let period = |w: f64| std::f64::consts::TAU / w;
     let theory = |name: &str| stat(name).mean;
@@ -176,8 +118,8 @@ pub fn mackay_case(d: &Descriptor, figures: &mut Vec<Figure>) -> anyhow::Result<
         "### MacKay's case: at what frequency?\n\n\
          MacKay's eleven particles (`preset = \"mackay-piston\"`): five light rods (masses 0.9–1.1) left, five \
          heavier (1.5–1.7) right, a piston of mass 40 between them, all starting with velocity 1, so the piston \
-         holds {share:.0}% of the kinetic energy (equipartition: 1/11 = 9%). {REPLICAS} replicas (the masses are \
-         drawn from his ranges), {DURATION} time units each, sampled every {SAMPLE_EVERY}: {coll} collisions, \
+         holds {share:.0}% of the kinetic energy (equipartition: 1/11 = 9%). {n_runs} replicas (the masses are \
+         drawn from his ranges), {duration} time units each, sampled every {sample_every}: {coll} collisions, \
          {secs:.2} CPU s in all.\n\n\
          If each gas is compressed adiabatically (P X^3 fixed in 1D), the piston moves in the potential of the \
          two gases, and with this much energy its swing is large, so the oscillation is far from harmonic:\n\n\
@@ -186,7 +128,7 @@ pub fn mackay_case(d: &Descriptor, figures: &mut Vec<Figure>) -> anyhow::Result<
          | adiabatic, nonlinear, gases' inertia added (M + M_gas/3) | {inr} | {pinr} |\n\
          | adiabatic, small oscillations, ω² = γP(1/X_L + 1/X_R)/M | {sm} | {psm} |\n\
          | isothermal (γ = 1), nonlinear | {iso} | {piso} |\n\
-         | **measured** (first periods, mean ± standard error, n = {n} of {REPLICAS}) | **{meas}** | **{pmeas}** |\n\n\
+         | **measured** (first periods, mean ± standard error, n = {n} of {n_runs}) | **{meas}** | **{pmeas}** |\n\n\
          Measured over adiabatic: {r_ad}; over adiabatic with the gases' inertia: {r_in}; over isothermal: \
          {r_iso}. {verdict} The piston's peak speed is {speed} times the gases' thermal speed: {slow}.\n\n\
          **How does it lose its excess energy?** Each collision exchanges momentum between the piston and a gas \
@@ -194,7 +136,7 @@ pub fn mackay_case(d: &Descriptor, figures: &mut Vec<Figure>) -> anyhow::Result<
          and those behind it slower; when the gas follows its adiabat this is reversible: the energy comes \
          back when the piston returns. What is lost is the part that is not: particles arriving at \
          different phases, and collisions within each gas that share the energy out. Here the piston gives \
-         away 63% of its excess oscillator energy in τ = {tau} time units (n = {taun} of {REPLICAS}), about \
+         away 63% of its excess oscillator energy in τ = {tau} time units (n = {taun} of {n_runs}), about \
          {cycles:.1} periods; the sweep below shows how that time grows with M.\n\n",
         share = 100.0 * stat("initial_piston_share").mean,
         coll = count(cost_collisions),
@@ -257,9 +199,15 @@ fn verdict(ad: &Stats, inertia: &Stats, iso: &Stats) -> String {
     }
 }
 
+/// The first replica: its start and what it recorded.
+struct First<'a> {
+    built: Built<1>,
+    out: &'a RunOutput,
+}
+
 /// MacKay's space-time diagram with the predicted piston paths; returns the file name.
 fn spacetime(
-    first: &Replica,
+    first: &First,
     paths: &[PredictedPath],
     horizon: f64,
     figures: &mut Vec<Figure>,

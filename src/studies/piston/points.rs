@@ -48,10 +48,10 @@ const RESULTS: &[&str] = &[
     "frequency_periods",
 ];
 
-/// The sweep's points in order of their ids.
+/// The sweep's points in order of their ids (cases are not the sweep's).
 pub fn points(runs: &[(RunSpec, RunOutput)]) -> Vec<Point> {
     let mut by_id: BTreeMap<u64, Vec<&(RunSpec, RunOutput)>> = BTreeMap::new();
-    for r in runs {
+    for r in runs.iter().filter(|(s, _)| s.case.is_none()) {
         by_id.entry(r.0.point_id).or_default().push(r);
     }
     by_id

@@ -4,11 +4,11 @@
 //! with M; the long-time share against equipartition; each with its cost.
 //! One part per dimension the sweep holds.
 
+use crate::model::chart::colour;
 use crate::model::chart::{ChartSpec, Layer, Paint};
 use crate::model::report::Figure;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
-use crate::report::plots::colour;
 use crate::stats::format::{count, num, pm};
 use crate::stats::summary::Stats;
 use crate::studies::piston::points::{Point, by_dimension, groups, points};

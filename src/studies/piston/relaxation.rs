@@ -2,9 +2,9 @@
 //! the relaxation time against the piston's mass, its power law, and in 2D
 //! the time the gases' lag in sharing a compression predicts.
 
+use crate::model::chart::colour;
 use crate::model::chart::{ChartSpec, Layer};
 use crate::model::report::Figure;
-use crate::report::plots::colour;
 use crate::stats::format::{count, num, pm};
 use crate::studies::piston::points::{Point, groups};
 use std::fmt::Write;

@@ -1,94 +1,52 @@
 //! The piston as a wall between two gases of disks (2D), in pictures: its
 //! path and the gases' energies over the early motion with the predicted
 //! paths drawn in, and each prediction against the measured frequency and
-//! relaxation time. Two cases of the `disk-piston` preset: a heavy wall
+//! relaxation time. Two `[[case]]`s of the `disk-piston` preset: a heavy wall
 //! between gases that collide many times per swing (the adiabatic theory's
 //! case), and MacKay's eleven particles as disks, whose gases hardly collide
 //! in a swing (where it breaks down).
 
-use crate::descriptor::load::parse;
+use super::cases;
 use crate::model::chart::{ChartSpec, Layer, Paint};
-use crate::model::descriptor::Descriptor;
 use crate::model::report::Figure;
-use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
-use crate::runner::seeds::{fnv1a, run_seed};
 use crate::stats::format::{count, num, pm};
-use crate::stats::summary::Stats;
-use crate::studies::piston::Options;
 use crate::studies::piston::pictures::{BLACK, GREY, Oscillator, PURPLE, PredictedPath, energies};
 use crate::studies::piston::state::{Geometry, Samples};
 use crate::theory::piston::Law;
 use crate::theory::piston_equilibrium::oscillator_share;
-use rand::SeedableRng;
 use std::f64::consts::TAU;
 use std::fmt::Write;
 
-const ORANGE: (u8, u8, u8) = (230, 120, 20);
-const REPLICAS: u32 = 16;
+const ORANGE: (u8, u8, u8) = (230, 159, 0);
 
-/// One case: the preset with these piston settings.
+/// One case of the `disk-piston` preset: the `[[case]]` of this name.
 struct Case {
-    tag: &'static str,
+    name: &'static str,
     title: &'static str,
-    mass: f64,
-    per_side: usize,
-    energy: f64,
 }
 
 const CASES: [Case; 2] = [
     Case {
-        tag: "collisional",
+        name: "disk-collisional",
         title: "a heavy wall, gases that collide often per swing",
-        mass: 3162.0,
-        per_side: 20,
-        energy: 10.0,
     },
     Case {
-        tag: "mackay",
+        name: "disk-mackay",
         title: "MacKay's eleven particles as disks (the preset as it is)",
-        mass: 40.0,
-        per_side: 5,
-        energy: 10.0,
     },
 ];
 
-/// The case's descriptor: the preset with its piston, run for `duration`.
-fn descriptor(
-    case: &Case,
-    o: &Options,
-    duration: f64,
-    sample_every: f64,
-) -> anyhow::Result<Descriptor> {
-    let text = format!(
-        "[study]\nname = \"disk-piston-{tag}\"\nreplicas = {REPLICAS}\nseed = 1\n\n\
-         [scene]\npreset = \"disk-piston\"\n\
-         piston = {{ mass = {mass:?}, position = 0.5, radius = 0.0, energy = {energy:?}, per_side = {n} }}\n\n\
-         [run]\nduration = {duration:?}\nsample_every = {sample_every:?}\n\n\
-         [analysis.piston]\nwindow_periods = {periods}\nband = {band:?}\nlate_fraction = {late:?}\n",
-        tag = case.tag,
-        mass = case.mass,
-        energy = case.energy,
-        n = case.per_side,
-        periods = o.periods,
-        band = o.band,
-        late = o.late,
-    );
-    parse(case.tag, &text)
-        .map(|l| l.descriptor)
-        .map_err(|e| anyhow::anyhow!("{e}"))
-}
-
-/// The scene of a run as built (its geometry and the piston's first velocity).
-fn built(spec: &RunSpec) -> anyhow::Result<crate::scene::Built<2>> {
-    let scene = crate::scene::resolve(&spec.descriptor.scene).map_err(|e| anyhow::anyhow!(e))?;
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(spec.seed);
-    crate::scene::build::<2>(&scene, &mut rng).map_err(|e| anyhow::anyhow!(e))
-}
-
-/// Both cases: pictures, predictions against measurements, costs.
-pub fn wall_cases(d: &Descriptor, figures: &mut Vec<Figure>) -> anyhow::Result<String> {
-    let o = Options::of(d);
+/// Both cases from their runs: pictures, predictions against measurements,
+/// costs. Empty if the plan has neither.
+pub fn wall_cases(all: &[cases::Run], figures: &mut Vec<Figure>) -> anyhow::Result<String> {
+    let present: Vec<(&Case, Vec<&cases::Run>)> = CASES
+        .iter()
+        .map(|c| (c, cases::runs(all, c.name)))
+        .filter(|(_, runs)| !runs.is_empty())
+        .collect();
+    if present.is_empty() {
+        return Ok(String::new());
+    }
     let mut md = String::from(
         "### The piston as a wall between disks (2D)\n\n\
          The `disk-piston` preset puts MacKay's two gases into 2D: light disks (masses 0.9–1.1) left and \
@@ -96,13 +54,15 @@ pub fn wall_cases(d: &Descriptor, figures: &mut Vec<Figure>) -> anyhow::Result<S
          diameter 1. The wall spans the box, so each gas is pushed along x only. If it shares the compression \
          with its y-motion (collisions between disks), it follows the 2D adiabat, γ = 2; if its disks never \
          collide, each keeps its x-action as a rod between two walls does, and the x-motion alone is \
-         compressed, γ = 3 (a frequency sqrt(3/2) = 1.22 times the adiabatic). Two cases, each \
-         16 replicas (the gas drawn afresh), predictions along each replica's measured periods (as in the sweep; see How each number is measured):\n\n",
+         compressed, γ = 3 (a frequency sqrt(3/2) = 1.22 times the adiabatic). Each case is a `[[case]]` of \
+         the descriptor (the gas drawn afresh per replica), run for a few of its predicted relaxation times \
+         and sampled 200 times per predicted period; predictions along each replica's measured periods (as in \
+         the sweep; see How each number is measured):\n\n",
     );
     let mut rows: Vec<[String; 2]> = Vec::new();
     let mut pictures = String::new();
-    for (index, case) in CASES.iter().enumerate() {
-        let (case_rows, case_md) = one_case(d, &o, index, case, figures)?;
+    for (case, runs) in &present {
+        let (case_rows, case_md) = one_case(case, runs, figures)?;
         if rows.is_empty() {
             rows = case_rows
                 .iter()
@@ -116,10 +76,12 @@ pub fn wall_cases(d: &Descriptor, figures: &mut Vec<Figure>) -> anyhow::Result<S
         }
         pictures.push_str(&case_md);
     }
+    let titles: Vec<&str> = present.iter().map(|(c, _)| c.title).collect();
     let _ = write!(
         md,
-        "| | {} | {} |\n|---|---|---|\n",
-        CASES[0].title, CASES[1].title
+        "| | {} |\n|---|{}\n",
+        titles.join(" | "),
+        "---|".repeat(titles.len())
     );
     for [what, values] in &rows {
         let _ = writeln!(md, "| {what} | {values} |");
@@ -131,80 +93,22 @@ pub fn wall_cases(d: &Descriptor, figures: &mut Vec<Figure>) -> anyhow::Result<S
 
 /// One case: its table rows (label, value) and its pictures.
 fn one_case(
-    d: &Descriptor,
-    o: &Options,
-    index: usize,
     case: &Case,
+    runs: &[&cases::Run],
     figures: &mut Vec<Figure>,
 ) -> anyhow::Result<(Vec<(String, String)>, String)> {
-    let base = d.study.seed ^ fnv1a(b"disk-piston");
-    let seed = |r: u32| run_seed(base, index as u64, r);
-    // Run long enough for the first periods and the relaxation the
-    // exchange theory predicts, from replica 0's start.
-    let probe = descriptor(case, o, 1.0, 1.0)?;
-    let first = RunSpec {
-        run_id: 0,
-        point_id: index as u64,
-        replica: 0,
-        seed: seed(0),
-        params: Vec::new(),
-        descriptor: probe,
-    };
-    let scene = built(&first)?;
-    let geometry = Geometry::of(&scene).ok_or_else(|| anyhow::anyhow!("no piston"))?;
-    let p = scene.piston.unwrap_or(0);
-    let gas = |side: usize| -> f64 {
-        scene
-            .particles
-            .iter()
-            .enumerate()
-            .filter(|(i, q)| *i != p && usize::from(q.pos[0] > scene.particles[p].pos[0]) == side)
-            .map(|(_, q)| q.kinetic_energy())
-            .sum()
-    };
-    let start = geometry.system(
-        scene.particles[p].pos[0],
-        scene.particles[p].kinetic_energy(),
-        gas(0),
-        gas(1),
-        1.0,
-    );
-    let period = TAU / start.omega(Law::Adiabatic);
-    let tau = geometry
-        .relaxing(&start)
-        .decay_time(start.omega(Law::Adiabatic));
-    let horizon = 5.0 * period;
-    let duration = (3.0 * tau).clamp(2.0 * horizon, 50.0 * period);
-    let descriptor = descriptor(case, o, duration, period / 200.0)?;
-    let started = std::time::Instant::now();
-    let runs: Vec<(RunSpec, RunOutput)> = (0..REPLICAS)
-        .map(|r| {
-            let spec = RunSpec {
-                run_id: u64::from(r),
-                point_id: index as u64,
-                replica: r,
-                seed: seed(r),
-                params: Vec::new(),
-                descriptor: descriptor.clone(),
-            };
-            let out = crate::runner::simulate::run(&spec)?;
-            Ok((spec, out))
-        })
-        .collect::<anyhow::Result<_>>()?;
-    let seconds = started.elapsed().as_secs_f64();
-    let collisions: u64 = runs.iter().map(|r| r.1.collisions).sum();
-    let stat = |name: &str| {
-        let v: Vec<f64> = runs
-            .iter()
-            .filter_map(|r| r.1.scalar(name))
-            .filter(|v| v.is_finite())
-            .collect();
-        Stats::of(&v)
-    };
+    let stat = |name: &str| cases::stat(runs, name);
+    let (collisions, seconds) = cases::cost(runs);
+    let n_runs = runs.len();
+    let (spec0, out0) = runs[0];
+    let duration = spec0.descriptor.run.duration.unwrap_or(f64::NAN);
+    let piston = crate::scene::resolve(&spec0.descriptor.scene)
+        .ok()
+        .and_then(|s| s.piston)
+        .ok_or_else(|| anyhow::anyhow!("case {} has no piston", case.name))?;
 
     // Pictures of replica 0.
-    let (spec0, out0) = &runs[0];
-    let scene0 = built(spec0)?;
+    let scene0 = cases::start::<2>(spec0)?;
     let g0 = Geometry::of(&scene0).ok_or_else(|| anyhow::anyhow!("no piston"))?;
     let samples = Samples::of(out0).map_err(|e| anyhow::anyhow!(e))?;
     let p0 = scene0.piston.unwrap_or(0);
@@ -215,6 +119,8 @@ fn one_case(
         samples.right[0],
         scene0.particles[p0].vel[0],
     );
+    let period = TAU / start0.omega(Law::Adiabatic);
+    let horizon = (5.0 * period).min(duration);
     let step = period / 2000.0;
     let paths = [
         (Law::Adiabatic, BLACK, "adiabatic, γ = 2"),
@@ -222,9 +128,9 @@ fn one_case(
         (Law::Isothermal, GREY, "isothermal, γ = 1"),
     ]
     .map(|(law, rgb, label)| (start0.trajectory(law, horizon, step), rgb, label));
-    let path_name = format!("disk_piston_{}_path.svg", case.tag);
+    let path_name = format!("{}_path.svg", case.name.replace('-', "_"));
     path_figure(&samples, &paths, horizon, case.title, &path_name, figures)?;
-    let energy_name = format!("disk_piston_{}_energy.svg", case.tag);
+    let energy_name = format!("{}_energy.svg", case.name.replace('-', "_"));
     let share = oscillator_share(
         2,
         g0.particles[0],
@@ -269,9 +175,11 @@ fn one_case(
             "piston mass M, disks a side, starting energy".into(),
             format!(
                 "{}, {}, {} kT",
-                num(case.mass),
-                case.per_side,
-                num(case.energy)
+                num(piston.mass),
+                piston
+                    .per_side
+                    .map_or("as the preset".into(), |n| n.to_string()),
+                num(piston.energy.unwrap_or(f64::NAN))
             ),
         ),
         ("M/M_gas".into(), num(stat("mass_over_gas").mean)),
@@ -280,7 +188,7 @@ fn one_case(
             num(stat("omega_tau").mean),
         ),
         (
-            "**measured ω** (n of 16)".into(),
+            format!("**measured ω** (n of {n_runs})"),
             format!(
                 "**{}** ({})",
                 pm(measured.mean, measured.stderr),
@@ -305,7 +213,7 @@ fn one_case(
         ),
         ("ω / isothermal".into(), ratio("frequency_ratio_isothermal")),
         (
-            "relaxation time τ measured (n of 16) / exchange theory".into(),
+            format!("relaxation time τ measured (n of {n_runs}) / exchange theory"),
             format!(
                 "{} ({}) / {}",
                 pm(tau_measured.mean, tau_measured.stderr),

@@ -1,0 +1,117 @@
+//! What a sweep expands to, as the descriptor says it: each parameter's
+//! values, the points in order, and how many runs they make (with the
+//! cases), before anything is planned.
+
+use crate::descriptor::load::Loaded;
+use crate::model::descriptor::{Scale, SweepMode, SweepSection, SweepValues};
+
+/// More runs than this need `--yes`.
+pub const CONFIRM_ABOVE: u64 = 100_000;
+/// More runs than this are refused outright: every planned run carries its
+/// own descriptor, so the plan alone would not fit in memory.
+pub const HARD_LIMIT: u64 = 2_000_000;
+
+/// The values a sweep parameter takes, in order.
+pub fn expand_values(values: &SweepValues) -> Vec<toml::Value> {
+    match values {
+        SweepValues::List(v) => v.clone(),
+        SweepValues::Range(r) => (0..r.steps)
+            .map(|i| {
+                let f = if r.steps == 1 {
+                    0.0
+                } else {
+                    i as f64 / (r.steps - 1) as f64
+                };
+                let x = match (i, r.scale) {
+                    (0, _) => r.from,
+                    (i, _) if i + 1 == r.steps => r.to,
+                    (_, Scale::Linear) => r.from + (r.to - r.from) * f,
+                    (_, Scale::Log) => significant(r.from * (r.to / r.from).powf(f)),
+                };
+                number(x)
+            })
+            .collect(),
+    }
+}
+
+/// Round to 12 significant digits, so a log range gives 100, not 99.99999999999999.
+fn significant(x: f64) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    let scale = 10f64.powi(11 - x.abs().log10().floor() as i32);
+    (x * scale).round() / scale
+}
+
+/// Whole numbers become TOML integers so they also fit integer keys (counts);
+/// serde reads an integer into a float key just as well.
+fn number(x: f64) -> toml::Value {
+    if x.fract() == 0.0 && x.abs() < 9.0e15 {
+        toml::Value::Integer(x as i64)
+    } else {
+        toml::Value::Float(x)
+    }
+}
+
+/// Sweep points in order: product (last key varies fastest) or zip.
+pub fn points(sweep: Option<&SweepSection>) -> Vec<Vec<(String, toml::Value)>> {
+    let Some(sweep) = sweep else {
+        return vec![Vec::new()];
+    };
+    let axes: Vec<(String, Vec<toml::Value>)> = sweep
+        .parameters
+        .iter()
+        .map(|(k, v)| (k.clone(), expand_values(v)))
+        .collect();
+    match sweep.mode {
+        SweepMode::Zip => {
+            let n = axes.iter().map(|(_, v)| v.len()).min().unwrap_or(0);
+            (0..n)
+                .map(|i| {
+                    axes.iter()
+                        .map(|(k, v)| (k.clone(), v[i].clone()))
+                        .collect()
+                })
+                .collect()
+        }
+        SweepMode::Product => axes.iter().fold(vec![Vec::new()], |acc, (k, values)| {
+            acc.iter()
+                .flat_map(|prefix| {
+                    values.iter().map(move |v| {
+                        let mut p = prefix.clone();
+                        p.push((k.clone(), v.clone()));
+                        p
+                    })
+                })
+                .collect()
+        }),
+    }
+}
+
+/// (sweep points, runs) without building the plan; saturates instead of overflowing.
+pub fn count(loaded: &Loaded) -> (u64, u64) {
+    let d = &loaded.descriptor;
+    let points = match &d.sweep {
+        None => 1,
+        Some(s) => {
+            let lens = s.parameters.values().map(|v| match v {
+                SweepValues::List(l) => l.len() as u64,
+                SweepValues::Range(r) => r.steps as u64,
+            });
+            match s.mode {
+                SweepMode::Zip => lens.min().unwrap_or(0),
+                SweepMode::Product => lens.fold(1u64, u64::saturating_mul),
+            }
+        }
+    };
+    let sweep_runs = points.saturating_mul(u64::from(d.study.replicas));
+    let case_runs = d
+        .case
+        .iter()
+        .map(|c| u64::from(c.replicas.unwrap_or(d.study.replicas)))
+        .fold(0u64, u64::saturating_add);
+    (
+        points.saturating_add(d.case.len() as u64),
+        sweep_runs.saturating_add(case_runs),
+    )
+}
