@@ -2,11 +2,13 @@
 //!
 //! Read `simulation.rs` first: it is the event loop. Everything else is one
 //! idea per file: the collision rule, the box, the queue, the neighbour lists,
-//! the observer hooks, and the checks a system passes before it runs.
+//! the observer hooks, the checks a system passes before it runs, and the
+//! `Dynamics` trait a run loop drives any integrator through.
 
 pub mod boundary;
 pub mod build;
 pub mod collide;
+pub mod dynamics;
 pub mod neighbours;
 pub mod observer;
 pub mod particle;
@@ -19,6 +21,7 @@ pub mod vector;
 
 pub use boundary::{Axis, SimBox, Wall};
 pub use build::BuildError;
+pub use dynamics::Dynamics;
 pub use neighbours::{Chain, Image, NeighbourList, Neighbourhood, PLANE, Persist};
 pub use observer::{Observer, PairCollision, Snapshot, WallHit};
 pub use particle::{Particle, Shape};

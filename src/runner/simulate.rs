@@ -1,6 +1,10 @@
-//! One run: scene -> engine -> observers -> analyses -> RunOutput.
+//! One run: scene -> dynamics -> observers -> analyses -> RunOutput.
+//!
+//! The run loop (`simulate`) is written once against `engine::Dynamics`;
+//! which integrator moves the particles is decided by the factory the
+//! dimension picks (`rods` or `balls`), and nowhere else.
 
-use crate::engine::{Chain, NeighbourList, Neighbourhood, Simulation, Stop};
+use crate::engine::{Chain, Dynamics, NeighbourList, Neighbourhood, Simulation, Stop};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::observe::{self, Context, ObserverSet};
@@ -15,50 +19,65 @@ use std::time::Instant;
 pub fn run(spec: &RunSpec) -> anyhow::Result<RunOutput> {
     let scene = scene::resolve(&spec.descriptor.scene).map_err(|e| anyhow!(e))?;
     match scene.dimension().map_err(|e| anyhow!(e))? {
-        1 => build_and_run::<1>(spec, &scene, run_in::<1, Chain>),
-        2 => build_and_run::<2>(spec, &scene, pick::<2>),
-        3 => build_and_run::<3>(spec, &scene, pick::<3>),
+        1 => simulate::<1>(spec, &scene, rods),
+        2 => simulate::<2>(spec, &scene, balls::<2>),
+        3 => simulate::<3>(spec, &scene, balls::<3>),
         d => bail!("scene.dimension = {d}; use 1, 2 or 3"),
     }
 }
 
-type Runner<const D: usize> =
-    fn(&RunSpec, scene::Built<D>, ChaCha8Rng, Instant) -> anyhow::Result<RunOutput>;
+/// What moves a run's particles, seen through the trait only.
+type Engine<const D: usize> = Box<dyn Dynamics<D, ObserverSet<D>>>;
 
-/// In 2D and 3D, the engine with plane support only for scenes with a
-/// piston wall: others pay nothing for it.
-fn pick<const D: usize>(
-    spec: &RunSpec,
-    built: scene::Built<D>,
-    rng: ChaCha8Rng,
-    started: Instant,
-) -> anyhow::Result<RunOutput> {
+/// Builds the dynamics of a built scene, given its observers and the seed of
+/// its random stream (thermal walls).
+type Factory<const D: usize> =
+    fn(&scene::Built<D>, ObserverSet<D>, u64) -> anyhow::Result<Engine<D>>;
+
+/// Rods: the event-driven engine with a chain of neighbours.
+fn rods(
+    built: &scene::Built<1>,
+    observers: ObserverSet<1>,
+    seed: u64,
+) -> anyhow::Result<Engine<1>> {
+    event_driven::<1, Chain>(built, observers, seed)
+}
+
+/// Disks and spheres: the event-driven engine with neighbour lists, with
+/// plane support only for scenes with a piston wall (others pay nothing for it).
+fn balls<const D: usize>(
+    built: &scene::Built<D>,
+    observers: ObserverSet<D>,
+    seed: u64,
+) -> anyhow::Result<Engine<D>> {
     if built.particles.iter().any(|p| p.is_plane()) {
-        run_in::<D, NeighbourList<D, true>>(spec, built, rng, started)
+        event_driven::<D, NeighbourList<D, true>>(built, observers, seed)
     } else {
-        run_in::<D, NeighbourList<D>>(spec, built, rng, started)
+        event_driven::<D, NeighbourList<D>>(built, observers, seed)
     }
 }
 
-fn build_and_run<const D: usize>(
+fn event_driven<const D: usize, N: Neighbourhood<D> + 'static>(
+    built: &scene::Built<D>,
+    observers: ObserverSet<D>,
+    seed: u64,
+) -> anyhow::Result<Engine<D>> {
+    let sim: Simulation<D, N, ObserverSet<D>> =
+        Simulation::new(built.particles.clone(), built.sim_box, observers, seed)
+            .context("the scene cannot be simulated")?;
+    Ok(Box::new(sim))
+}
+
+fn simulate<const D: usize>(
     spec: &RunSpec,
     scene: &crate::model::scene::SceneSpec,
-    run: Runner<D>,
+    factory: Factory<D>,
 ) -> anyhow::Result<RunOutput> {
     let started = Instant::now();
     // One stream per run: the scene draws from it first, then the engine's
     // thermal walls get a seed drawn from it.
     let mut rng = ChaCha8Rng::seed_from_u64(spec.seed);
     let built = scene::build::<D>(scene, &mut rng).map_err(|e| anyhow!("scene: {e}"))?;
-    run(spec, built, rng, started)
-}
-
-fn run_in<const D: usize, N: Neighbourhood<D>>(
-    spec: &RunSpec,
-    built: scene::Built<D>,
-    mut rng: ChaCha8Rng,
-    started: Instant,
-) -> anyhow::Result<RunOutput> {
     let d = &spec.descriptor;
     let mut series = d.observe.series.clone();
     for name in studies::series(d) {
@@ -74,33 +93,28 @@ fn run_in<const D: usize, N: Neighbourhood<D>>(
     )
     .map_err(|e| anyhow!("observe: {e}"))?;
     let engine_seed = rand::RngExt::random::<u64>(&mut rng);
-    let mut sim: Simulation<D, N, ObserverSet<D>> = Simulation::new(
-        built.particles.clone(),
-        built.sim_box,
-        observers,
-        engine_seed,
-    )
-    .context("the scene cannot be simulated")?;
+    let mut sim = factory(&built, observers, engine_seed)?;
 
     let equilibrate = d.run.equilibrate;
     if equilibrate > 0.0 {
-        sim.run(Stop::Time(equilibrate));
+        sim.advance(Stop::Time(equilibrate));
     }
     let start = sim.time();
     let energy0 = sim.kinetic_energy();
-    sim.observer.recording = true;
+    sim.observer_mut().recording = true;
     sim.sample_every(d.run.sample_every);
     let stop = match (d.run.duration, d.run.collisions) {
         (Some(t), _) => Stop::Time(start + t),
         (None, Some(n)) => Stop::Collisions(n),
         (None, None) => bail!("[run] needs `duration` or `collisions`"),
     };
-    sim.run(stop);
+    sim.advance(stop);
     let duration = sim.time() - start;
 
+    let counts = sim.counts();
     let mut out = RunOutput {
-        events: sim.counts.events,
-        collisions: sim.counts.collisions,
+        events: counts.events,
+        collisions: counts.collisions,
         ..Default::default()
     };
     let sim_box = *sim.sim_box();
