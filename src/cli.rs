@@ -282,8 +282,26 @@ pub fn listing() -> String {
         out,
         "observables ([observe] series / scalars / histograms = [\"<name>\"]):"
     );
-    for (kind, name, about) in crate::observe::CATALOGUE {
-        let _ = writeln!(out, "  {kind:<10} {name:<26} {about}");
+    for e in crate::observe::CATALOGUE {
+        let needs: Vec<&str> = e
+            .needs
+            .iter()
+            .map(|n| crate::observe::catalogue::need_text(*n))
+            .collect();
+        let mut line = format!(
+            "  {:<10} {:<26} {} [{}]",
+            e.kind.key(),
+            e.name,
+            e.doc,
+            e.unit
+        );
+        if e.writes != e.name {
+            let _ = write!(line, "; writes {}", e.writes);
+        }
+        if !needs.is_empty() {
+            let _ = write!(line, "; needs {}", needs.join(", "));
+        }
+        let _ = writeln!(out, "{line}");
     }
     let _ = writeln!(out, "analyses ([analysis.<name>]):");
     for a in crate::studies::REGISTRY {

@@ -1,9 +1,11 @@
 //! docs/descriptor.md tells the truth: its annotated example validates with
-//! every name it uses and runs end to end (its `--quick` version), and its
-//! catalogue lists every observable and analysis option bonkers knows.
+//! every name it uses and runs end to end (its `--quick` version), its table
+//! of observables is the observable catalogue, and it lists every analysis
+//! option bonkers knows.
 
 use bonkers::descriptor::load::{parse, quick};
 use bonkers::descriptor::sweep::count;
+use bonkers::observe::{CATALOGUE, Entry, catalogue};
 use bonkers::runner::pipeline::{StudyOptions, run_study};
 use bonkers::runner::progress::ProgressMode;
 use bonkers::runner::store::read_parquet;
@@ -95,16 +97,77 @@ fn the_documented_example_runs() {
 }
 
 #[test]
-fn every_observable_and_analysis_option_is_documented() {
+fn every_analysis_option_is_documented() {
     let doc = doc();
-    for (kind, name, _) in bonkers::observe::CATALOGUE {
-        let row = format!("| `{kind}` | `{name}` |");
-        assert!(doc.contains(&row), "docs/descriptor.md lacks the row {row}");
-    }
     for a in REGISTRY {
         for o in a.options() {
             let row = format!("| `{}` | `{}` |", a.name(), o.name);
             assert!(doc.contains(&row), "docs/descriptor.md lacks the row {row}");
         }
     }
+}
+
+const OBSERVABLES_HEADER: &str = "| kind | name | gives | writes | unit | needs |";
+
+/// The cells of each row of the observables table, unescaped and trimmed.
+fn observable_rows(doc: &str) -> Vec<Vec<String>> {
+    let mut lines = doc.lines().skip_while(|l| *l != OBSERVABLES_HEADER);
+    assert!(
+        lines.next().is_some(),
+        "docs/descriptor.md lacks the observables table {OBSERVABLES_HEADER}"
+    );
+    lines
+        .skip(1) // |---|...
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| {
+            // Split at the `|` that are not escaped as `\|`.
+            let cells = l.trim().trim_matches('|').replace("\\|", "\u{1}");
+            cells
+                .split('|')
+                .map(|c| c.trim().replace('\u{1}', "|"))
+                .collect()
+        })
+        .collect()
+}
+
+/// A catalogue entry as its row of the table says it.
+fn documented(e: &Entry) -> Vec<String> {
+    let needs: Vec<&str> = e.needs.iter().map(|n| catalogue::need_text(*n)).collect();
+    vec![
+        format!("`{}`", e.kind.key()),
+        format!("`{}`", e.name),
+        e.doc.to_string(),
+        format!("`{}`", e.writes),
+        e.unit.to_string(),
+        needs.join(", "),
+    ]
+}
+
+/// The observables table of docs/descriptor.md and the catalogue are the
+/// same list: every entry has its row (kind, name, doc, names written, unit,
+/// needs), and every row is an entry.
+#[test]
+fn the_observables_table_is_the_catalogue() {
+    let rows = observable_rows(&doc());
+    for e in CATALOGUE {
+        let row = documented(e);
+        let same_name = rows.iter().find(|r| r[..2] == row[..2]);
+        assert_eq!(
+            same_name,
+            Some(&row),
+            "docs/descriptor.md: the row of {} `{}` should read\n| {} |",
+            e.kind.key(),
+            e.name,
+            row.join(" | ")
+        );
+    }
+    for row in &rows {
+        assert!(
+            CATALOGUE.iter().any(|e| documented(e)[..2] == row[..2]),
+            "docs/descriptor.md documents {} {}, which the catalogue lacks",
+            row[0],
+            row[1]
+        );
+    }
+    assert_eq!(rows.len(), CATALOGUE.len(), "a row is there twice");
 }

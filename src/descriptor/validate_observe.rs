@@ -7,38 +7,29 @@ use crate::descriptor::validate::{Check, bad};
 use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
 use crate::model::scene::{Boundary, SceneSpec};
-use crate::observe::CATALOGUE;
+use crate::observe::{CATALOGUE, Kind, catalogue};
 use crate::studies;
-
-/// What an observable needs beyond its name.
-pub fn needs(kind: &str, name: &str) -> &'static [Need] {
-    match (kind, name) {
-        ("series", "piston_position") => &[Need::Sampling, Need::Piston],
-        ("series", _) | ("histograms", _) | ("scalars", "temperature") => &[Need::Sampling],
-        ("scalars", "wall_pressure") => &[Need::Walls],
-        ("scalars", "wall_heat") => &[Need::ThermalWalls],
-        _ => &[],
-    }
-}
 
 /// `[observe]` of a descriptor whose scene is `scene` (resolved).
 pub fn observe(d: &Descriptor, scene: &SceneSpec) -> Check {
     let o = &d.observe;
     for (kind, names) in [
-        ("series", &o.series),
-        ("scalars", &o.scalars),
-        ("histograms", &o.histograms),
+        (Kind::Series, &o.series),
+        (Kind::Scalars, &o.scalars),
+        (Kind::Histograms, &o.histograms),
     ] {
         for (i, name) in names.iter().enumerate() {
-            let key = format!("observe.{kind}.{i}");
-            known(kind, name, &key)?;
+            let key = format!("observe.{}.{i}", kind.key());
+            let Some(entry) = catalogue::find(kind, name) else {
+                return unknown(kind, name, &key);
+            };
             if names[..i].contains(name) {
                 return bad(key, format!("`{name}` is listed twice"), None);
             }
-            for need in needs(kind, name) {
+            for need in entry.needs {
                 met(*need, d, scene, &key, &format!("`{name}`"))?;
             }
-            if (kind, name.as_str()) == ("series", "positions") {
+            if (kind, name.as_str()) == (Kind::Series, "positions") {
                 positions_fit(d, scene, &key)?;
             }
         }
@@ -68,18 +59,18 @@ fn positions_fit(d: &Descriptor, scene: &SceneSpec, key: &str) -> Check {
     )
 }
 
-fn known(kind: &str, name: &str, key: &str) -> Check {
-    if CATALOGUE.iter().any(|(k, n, _)| *k == kind && *n == name) {
-        return Ok(());
-    }
-    let valid: Vec<String> = CATALOGUE
-        .iter()
-        .filter(|(k, _, _)| *k == kind)
-        .map(|(_, n, _)| n.to_string())
+/// An unknown name: said so, with the list it belongs in, the closest known
+/// name, or the known names.
+fn unknown(kind: Kind, name: &str, key: &str) -> Check {
+    let valid: Vec<String> = catalogue::names(kind)
+        .into_iter()
+        .map(String::from)
         .collect();
-    let elsewhere = CATALOGUE.iter().find(|(_, n, _)| *n == name);
+    let elsewhere = CATALOGUE.iter().find(|e| e.name == name);
+    let kind = kind.key();
     let hint = match (elsewhere, closest(name, &valid)) {
-        (Some((other, _, _)), _) => {
+        (Some(other), _) => {
+            let other = other.kind.key();
             format!("`{name}` is a {other} observable: list it under `{other}`")
         }
         (None, Some(best)) => format!("did you mean `{best}`?"),

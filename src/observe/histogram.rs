@@ -1,49 +1,61 @@
-//! Velocity histogram: sqrt(m) v_x, so every species shares one Gaussian of
-//! variance kT at equilibrium.
+//! A histogram of one value per particle over every sample, on fixed bins:
+//! what a histogram observable is made of (its file gives the value).
 
 use super::{Context, Measure};
-use crate::engine::{Observer, Snapshot};
+use crate::engine::{Observer, Particle, Snapshot};
 use crate::model::run_output::{Histogram, RunOutput};
 
-const BINS: usize = 60;
-const HALF_WIDTH: f64 = 6.0;
-
-pub struct ScaledVelocity {
+pub struct ParticleHistogram<const D: usize> {
+    /// The name written to histograms.parquet.
+    name: &'static str,
+    lo: f64,
+    hi: f64,
     counts: Vec<f64>,
+    /// The particle's value, or None to leave it out.
+    value: fn(&Particle<D>) -> Option<f64>,
 }
 
-impl Default for ScaledVelocity {
-    fn default() -> Self {
-        ScaledVelocity {
-            counts: vec![0.0; BINS],
+impl<const D: usize> ParticleHistogram<D> {
+    /// `bins` equal bins over [lo, hi); values outside are not counted.
+    pub fn new(
+        name: &'static str,
+        (lo, hi): (f64, f64),
+        bins: usize,
+        value: fn(&Particle<D>) -> Option<f64>,
+    ) -> Self {
+        ParticleHistogram {
+            name,
+            lo,
+            hi,
+            counts: vec![0.0; bins],
+            value,
         }
     }
 }
 
-impl<const D: usize> Observer<D> for ScaledVelocity {
+impl<const D: usize> Observer<D> for ParticleHistogram<D> {
     fn sample(&mut self, s: &Snapshot<D>) {
-        for p in s.particles.iter().filter(|p| !p.is_immovable()) {
-            let u = p.vel[0] / p.inv_mass.sqrt();
-            let bin = ((u + HALF_WIDTH) / (2.0 * HALF_WIDTH) * BINS as f64).floor();
-            if (0.0..BINS as f64).contains(&bin) {
+        let bins = self.counts.len() as f64;
+        for u in s.particles.iter().filter_map(self.value) {
+            let bin = ((u - self.lo) / (self.hi - self.lo) * bins).floor();
+            if (0.0..bins).contains(&bin) {
                 self.counts[bin as usize] += 1.0;
             }
         }
     }
 }
 
-impl<const D: usize> Measure<D> for ScaledVelocity {
+impl<const D: usize> Measure<D> for ParticleHistogram<D> {
     fn uses_samples(&self) -> bool {
         true
     }
     fn finish(self: Box<Self>, _ctx: &Context, out: &mut RunOutput) {
-        let w = 2.0 * HALF_WIDTH / BINS as f64;
+        let bins = self.counts.len();
+        let w = (self.hi - self.lo) / bins as f64;
         out.histograms.push(Histogram {
-            observable: "scaled_velocity_x".into(),
-            lo: (0..BINS).map(|b| -HALF_WIDTH + b as f64 * w).collect(),
-            hi: (0..BINS)
-                .map(|b| -HALF_WIDTH + (b + 1) as f64 * w)
-                .collect(),
+            observable: self.name.into(),
+            lo: (0..bins).map(|b| self.lo + b as f64 * w).collect(),
+            hi: (0..bins).map(|b| self.lo + (b + 1) as f64 * w).collect(),
             count: self.counts,
         });
     }

@@ -1,9 +1,18 @@
 //! Names as a reader wants to see them: axis labels with reduced units, short
 //! parameter names for legends, and file-safe slugs.
 
-/// A label with units for a known parameter key path or observable name; the
-/// raw name otherwise (an unknown name is still honest, just less friendly).
+use crate::observe::catalogue;
+
+/// A label with units for a name an observable writes (from the catalogue),
+/// a known parameter key path or result; the raw name otherwise (an unknown
+/// name is still honest, just less friendly).
 pub fn axis_label(name: &str) -> String {
+    if let Some((label, unit)) = catalogue::label(name) {
+        return match unit {
+            "1" => label,
+            _ => format!("{label} [{unit}]"),
+        };
+    }
     let known = match name {
         "t" | "time" => "time t [σ√(m/kT)]",
         "scene.piston.mass" => "piston mass M [m]",
@@ -18,12 +27,10 @@ pub fn axis_label(name: &str) -> String {
         "study.replicas" => "replicas",
         "frequency" | "piston_frequency" => "piston frequency [√(kT/m)/σ]",
         "period" | "piston_period" => "piston period [σ√(m/kT)]",
-        "piston_position" | "piston_x" => "piston position x [σ]",
+        "piston_x" => "piston position x [σ]",
         "piston_velocity" | "piston_v" => "piston velocity [√(kT/m)]",
-        "temperature" | "kinetic_temperature" => "temperature kT [ε]",
-        "energy" | "kinetic_energy" => "kinetic energy [kT]",
-        "wall_pressure" => "wall pressure βPσᵈ",
-        "virial_pressure" => "virial pressure βPσᵈ",
+        "kinetic_temperature" => "temperature [kT]",
+        "energy" => "kinetic energy [kT]",
         "pressure" => "pressure βPσᵈ",
         "compressibility" | "Z" => "compressibility Z = βP/ρ",
         "density" | "rho" => "number density ρσᵈ",
@@ -84,6 +91,22 @@ mod tests {
         assert_eq!(axis_label("scene.piston.mass"), "piston mass M [m]");
         assert_eq!(axis_label("scene.species.1.mass"), "species 1 mass [m]");
         assert_eq!(axis_label("my_observable"), "my_observable");
+        // Observables: label and unit from the catalogue, patterns filled in.
+        assert_eq!(axis_label("kinetic_energy"), "kinetic energy [kT]");
+        assert_eq!(axis_label("wall_pressure"), "wall pressure P [kT/σᵈ]");
+        assert_eq!(
+            axis_label("kinetic_energy.light"),
+            "kinetic energy of light [kT]"
+        );
+        assert_eq!(
+            axis_label("heat_in.axis1.high"),
+            "heat in from the high wall of axis 1 [kT]"
+        );
+        assert_eq!(
+            axis_label("left_fraction"),
+            "fraction of the particles in the left half"
+        );
+        assert_eq!(axis_label("x.12"), "x of particle 12 [σ]");
         assert_eq!(short_name("scene.piston.mass"), "mass");
         assert_eq!(slug("g(r) A"), "g_r__a");
     }

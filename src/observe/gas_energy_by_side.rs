@@ -1,30 +1,42 @@
 //! Kinetic energy of the gas on each side of the piston (`gas_energy.left`,
 //! `gas_energy.right`): what the piston analysis needs to follow each gas
-//! along its adiabat, whatever species the gases are made of.
+//! along its adiabat, whatever species the gases are made of. It keeps its own
+//! clock (an observer, not a probe of the shared pass), as it always has: the
+//! tables keep their order.
 
-use super::{Context, Measure};
+use super::{Context, Entry, Kind, Measure, Observable, Part, Setup};
 use crate::engine::{Observer, Snapshot};
+use crate::model::need::Need;
 use crate::model::run_output::{RunOutput, Series};
 
-pub struct SideEnergies {
+pub struct GasEnergyBySide {
     piston: Option<usize>,
     t: Vec<f64>,
     left: Vec<f64>,
     right: Vec<f64>,
 }
 
-impl SideEnergies {
-    pub fn new(piston: Option<usize>) -> Self {
-        SideEnergies {
-            piston,
+impl Observable for GasEnergyBySide {
+    const ENTRY: Entry = Entry {
+        name: "gas_energy_by_side",
+        kind: Kind::Series,
+        writes: "gas_energy.<left|right>",
+        label: "kinetic energy of the gas <left|right> of the piston",
+        unit: "kT",
+        needs: &[Need::Sampling, Need::Piston],
+        doc: "kinetic energy of the gas left and right of the piston",
+    };
+    fn part<const D: usize>(setup: &Setup) -> Part<D> {
+        Part::Observer(Box::new(GasEnergyBySide {
+            piston: setup.piston,
             t: Vec::new(),
             left: Vec::new(),
             right: Vec::new(),
-        }
+        }))
     }
 }
 
-impl<const D: usize> Observer<D> for SideEnergies {
+impl<const D: usize> Observer<D> for GasEnergyBySide {
     fn sample(&mut self, s: &Snapshot<D>) {
         let Some(p) = self.piston else { return };
         let wall = s.position(p)[0];
@@ -45,7 +57,7 @@ impl<const D: usize> Observer<D> for SideEnergies {
     }
 }
 
-impl<const D: usize> Measure<D> for SideEnergies {
+impl<const D: usize> Measure<D> for GasEnergyBySide {
     fn uses_samples(&self) -> bool {
         true
     }
