@@ -5,8 +5,9 @@ use crate::descriptor::errors::StudyError;
 use crate::descriptor::load::{Loaded, show};
 use crate::descriptor::sweep;
 use crate::model::run_spec::RunSpec;
+use crate::runner::collect;
 use crate::runner::estimate::{self, RunCost};
-use crate::runner::pipeline::{self, StudyOptions};
+use crate::runner::pipeline::{self, CollectOptions, StudyOptions};
 use crate::runner::plan;
 use crate::runner::progress::{ProgressMode, human_duration};
 use crate::runner::run::SimulateFn;
@@ -31,6 +32,12 @@ struct Cli {
 enum Command {
     /// Run a study: every sweep point x replica, then tables, plots and a report.
     Run(RunArgs),
+    /// Make the tables, plots and report from the saved runs, running nothing.
+    ///
+    /// Give it the descriptor and flags of the `study run` that saved the runs,
+    /// so it finds the same plan and output folder. Planned runs with no record
+    /// are listed, with the command that runs them, and nothing is written.
+    Collect(CollectArgs),
     /// Check a descriptor and print its plan without running anything.
     Validate(PlanArgs),
     /// List the bundled studies, scenes, observables and analyses.
@@ -70,6 +77,15 @@ struct RunArgs {
     quiet: bool,
 }
 
+#[derive(Debug, Args)]
+struct CollectArgs {
+    #[command(flatten)]
+    plan: PlanArgs,
+    /// Output directory holding the runs (default: reports/<study name>/).
+    #[arg(long)]
+    out: Option<PathBuf>,
+}
+
 /// Set by Ctrl-C: no new runs start.
 static STOP: AtomicBool = AtomicBool::new(false);
 
@@ -84,6 +100,7 @@ pub fn main(args: Vec<std::ffi::OsString>, simulate: &SimulateFn<'_>) -> i32 {
     };
     let result = match cli.command {
         Command::Run(a) => run(a, args, simulate),
+        Command::Collect(a) => collect(a, args),
         Command::Validate(a) => validate(&a),
         Command::List => list(),
     };
@@ -142,6 +159,42 @@ fn run(
             "study: {} run(s) failed; their status is in runs.parquet; run again to retry them",
             outcome.failed
         );
+        return Ok(1);
+    }
+    Ok(0)
+}
+
+fn collect(a: CollectArgs, args: Vec<std::ffi::OsString>) -> Result<i32, StudyError> {
+    let options = CollectOptions {
+        out: a.out,
+        replicas: a.plan.replicas,
+        quick: a.plan.quick,
+        yes: a.plan.yes,
+        command_line: args
+            .iter()
+            .map(|s| s.to_string_lossy().into_owned())
+            .collect(),
+    };
+    let outcome = pipeline::collect_study(&a.plan.file, &options)?;
+    eprintln!(
+        "study: collected {} runs -> {}",
+        outcome.planned,
+        outcome.out_dir.display()
+    );
+    if !outcome.failed.is_empty() {
+        eprint!(
+            "study: {} run(s) failed; their status is in runs.parquet:\n{}",
+            outcome.failed.len(),
+            collect::listing(&outcome.failed)
+        );
+        let rerun = pipeline::run_command(
+            &a.plan.file,
+            &outcome.out_dir,
+            a.plan.quick,
+            a.plan.replicas,
+            a.plan.yes,
+        );
+        eprintln!("study: `{rerun}` retries them");
         return Ok(1);
     }
     Ok(0)

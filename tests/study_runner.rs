@@ -10,10 +10,9 @@ use bonkers::runner::plan::plan;
 use bonkers::runner::progress::ProgressMode;
 use bonkers::runner::run::run_file;
 use bonkers::runner::store::read_parquet;
-use polars::prelude::DataFrame;
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-use study_common::{Interrupting, PISTON, fake, write_descriptor};
+use study_common::{Interrupting, PISTON, assert_same, fake, tables, write_descriptor};
 
 /// A simulator that counts its calls.
 struct Counting(AtomicUsize);
@@ -49,41 +48,6 @@ fn options(out: &Path, threads: usize) -> StudyOptions {
         progress: ProgressMode::Quiet,
         yes: false,
         command_line: vec!["study".into(), "run".into()],
-    }
-}
-
-/// Every table of `dir` without the timing columns, which legitimately vary.
-fn tables(dir: &Path) -> Vec<(String, DataFrame)> {
-    [
-        "runs.parquet",
-        "series.parquet",
-        "histograms.parquet",
-        "summary.parquet",
-    ]
-    .iter()
-    .map(|name| {
-        let mut df = read_parquet(&dir.join(name)).unwrap();
-        for col in ["wall_seconds", "cpu_seconds", "prepare_seconds"] {
-            if df.column(col).is_ok() {
-                df = df.drop(col).unwrap();
-            }
-        }
-        (name.to_string(), df)
-    })
-    .collect()
-}
-
-fn assert_same(a: &[(String, DataFrame)], b: &[(String, DataFrame)]) {
-    for ((name, x), (_, y)) in a.iter().zip(b) {
-        assert_eq!(x.get_column_names(), y.get_column_names(), "{name}");
-        assert_eq!(x.height(), y.height(), "{name}");
-        for (cx, cy) in x.columns().iter().zip(y.columns()) {
-            assert!(
-                cx.equals_missing(cy),
-                "{name}: column {} differs",
-                cx.name()
-            );
-        }
     }
 }
 

@@ -1,21 +1,17 @@
-//! `study run` end to end: descriptor -> plan -> runs -> tables -> report -> manifest.
-//! The calls into the analysis and report layers are the two marked seams.
+//! The study front ends, each descriptor -> plan first: `study run` (run the
+//! plan, then collect), a run of part of a plan (records only), and
+//! `study collect` (stored records -> tables, report, manifest).
 
 use crate::descriptor::errors::{DescriptorError, StudyError};
 use crate::descriptor::load::{self, Loaded};
 use crate::descriptor::sweep::{self, CONFIRM_ABOVE};
-use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
-use crate::model::summary::SummaryRow;
-use crate::report::ReportMeta;
+use crate::runner::collect::{self, Collected, Invocation};
 use crate::runner::lock::OutLock;
-use crate::runner::manifest::{Manifest, RunCounts, rfc3339, version};
 use crate::runner::plan;
 use crate::runner::progress::ProgressMode;
-use crate::runner::publish::{self, Staging};
-use crate::runner::record::RunRecord;
-use crate::runner::run::{RunnerOptions, SimulateFn, run_all};
-use crate::runner::store;
+use crate::runner::publish;
+use crate::runner::run::{RunnerOptions, RunnerReport, SimulateFn, Subset, run_subset};
 use anyhow::Context;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
@@ -32,6 +28,18 @@ pub struct StudyOptions {
     pub fresh: bool,
     pub progress: ProgressMode,
     /// Confirm plans of more than `CONFIRM_ABOVE` runs.
+    pub yes: bool,
+    /// Recorded in the manifest.
+    pub command_line: Vec<String>,
+}
+
+/// Options of `study collect`: those that find the plan and its folder.
+#[derive(Debug, Clone)]
+pub struct CollectOptions {
+    /// Output directory; default `default_out_dir`.
+    pub out: Option<PathBuf>,
+    pub replicas: Option<u32>,
+    pub quick: bool,
     pub yes: bool,
     /// Recorded in the manifest.
     pub command_line: Vec<String>,
@@ -84,9 +92,115 @@ pub fn default_out_dir(loaded: &Loaded, quick: bool) -> PathBuf {
     Path::new("reports").join(folder)
 }
 
-/// Run the study at `path`. Completed runs are kept under `OUT/runs/` so an
-/// interrupted study resumes; tables, plots, report and manifest are written
-/// only when every run has finished, and published together (`publish.rs`).
+/// A descriptor planned, with its output folder.
+struct Planned {
+    loaded: Loaded,
+    specs: Vec<RunSpec>,
+    out_dir: PathBuf,
+}
+
+fn plan_study(
+    path: &Path,
+    replicas: Option<u32>,
+    quick: bool,
+    yes: bool,
+    out: Option<&PathBuf>,
+) -> Result<Planned, StudyError> {
+    let loaded = prepare(path, replicas, quick)?;
+    confirm_size(&loaded, yes)?;
+    let specs = plan::plan(&loaded)?;
+    let out_dir = out
+        .cloned()
+        .unwrap_or_else(|| default_out_dir(&loaded, quick));
+    Ok(Planned {
+        loaded,
+        specs,
+        out_dir,
+    })
+}
+
+/// Create and lock the output folder, and remove what a killed invocation left.
+fn claim(out_dir: &Path) -> Result<OutLock, StudyError> {
+    std::fs::create_dir_all(out_dir)
+        .with_context(|| format!("cannot create the output directory {}", out_dir.display()))?;
+    let lock = OutLock::acquire(out_dir)?;
+    publish::remove_leftovers(out_dir)?;
+    Ok(lock)
+}
+
+/// The `study run` command that runs (or resumes) the plan these flags make,
+/// into `out_dir`: what to type when runs are missing.
+pub fn run_command(
+    path: &Path,
+    out_dir: &Path,
+    quick: bool,
+    replicas: Option<u32>,
+    yes: bool,
+) -> String {
+    let mut words = vec![
+        "study".to_string(),
+        "run".to_string(),
+        shell_word(&path.to_string_lossy()),
+        "--out".to_string(),
+        shell_word(&out_dir.to_string_lossy()),
+    ];
+    if quick {
+        words.push("--quick".to_string());
+    }
+    if let Some(n) = replicas {
+        words.push(format!("--replicas {n}"));
+    }
+    if yes {
+        words.push("--yes".to_string());
+    }
+    words.join(" ")
+}
+
+/// `word` as a POSIX shell reads it back: bare if it is plain, else quoted.
+fn shell_word(word: &str) -> String {
+    let plain = |c: char| c.is_ascii_alphanumeric() || "-_./=:,+@%".contains(c);
+    if !word.is_empty() && word.chars().all(plain) {
+        word.to_string()
+    } else {
+        format!("'{}'", word.replace('\'', r"'\''"))
+    }
+}
+
+/// Run the picked runs of the plan into records; Ctrl-C is an error that
+/// says how many runs are kept. Returns the report and its wall time.
+fn compute(
+    planned: &Planned,
+    subset: Subset<'_>,
+    options: &StudyOptions,
+    keep: bool,
+    simulate: &SimulateFn<'_>,
+    stop: &AtomicBool,
+) -> Result<(RunnerReport, f64), StudyError> {
+    let runner_options = RunnerOptions {
+        threads: options.threads,
+        fresh: options.fresh,
+        progress: options.progress,
+        keep,
+    };
+    let clock = Instant::now();
+    let report = run_subset(
+        &planned.specs,
+        subset,
+        &planned.out_dir,
+        simulate,
+        &runner_options,
+        stop,
+    )?;
+    if report.interrupted {
+        return Err(StudyError::Interrupted(report.kept()));
+    }
+    Ok((report, clock.elapsed().as_secs_f64()))
+}
+
+/// Run the study at `path`: its whole plan, then collect. Completed runs
+/// are kept under `OUT/runs/` so an interrupted study resumes; tables,
+/// plots, report and manifest are written only when every run has
+/// finished, and published together (`collect.rs`).
 pub fn run_study(
     path: &Path,
     options: &StudyOptions,
@@ -95,119 +209,107 @@ pub fn run_study(
 ) -> Result<StudyOutcome, StudyError> {
     let started = SystemTime::now();
     let clock = Instant::now();
-    let loaded = prepare(path, options.replicas, options.quick)?;
-    confirm_size(&loaded, options.yes)?;
-    let specs = plan::plan(&loaded)?;
-    let out_dir = options
-        .out
-        .clone()
-        .unwrap_or_else(|| default_out_dir(&loaded, options.quick));
-    std::fs::create_dir_all(&out_dir)
-        .with_context(|| format!("cannot create the output directory {}", out_dir.display()))?;
-    let _lock = OutLock::acquire(&out_dir)?;
-    publish::remove_leftovers(&out_dir)?;
-
-    let runner_options = RunnerOptions {
-        threads: options.threads,
-        fresh: options.fresh,
-        progress: options.progress,
-    };
-    let runs_clock = Instant::now();
-    let report = run_all(&specs, &out_dir, simulate, &runner_options, stop)?;
-    let runs_wall_seconds = runs_clock.elapsed().as_secs_f64();
-    if report.interrupted {
-        return Err(StudyError::Interrupted(
-            report.records.iter().flatten().count(),
-        ));
-    }
-    let runs: Vec<(RunSpec, RunRecord)> = specs
-        .into_iter()
-        .zip(report.records.into_iter().flatten())
-        .collect();
-    let succeeded: Vec<(RunSpec, RunOutput)> = runs
-        .iter()
-        .filter(|(_, r)| r.ok())
-        .map(|(s, r)| (s.clone(), r.output.clone()))
-        .collect();
-
-    let staging = Staging::create(&out_dir)?;
-    let summary = summarize(&succeeded);
-    store::write_tables(staging.dir(), &runs, &summary)?;
-    let sections = crate::studies::sections(&loaded.descriptor, &succeeded)?;
-    let info = ReportMeta {
-        command: options.command_line.join(" "),
-        threads: report.threads,
-        started: rfc3339(started),
-        finished: rfc3339(SystemTime::now()),
-        version: version().to_string(),
-        total_wall_seconds: clock.elapsed().as_secs_f64(),
-        runs_wall_seconds,
-        resumed_runs: report.resumed,
-        planned_runs: runs.len(),
-        failed_runs: runs
-            .iter()
-            .filter(|(_, r)| !r.ok())
-            .map(|(s, r)| (s.run_id, r.status.clone()))
-            .collect(),
-    };
-    write_report(
-        staging.dir(),
-        &loaded,
-        &succeeded,
-        &summary,
-        &sections,
-        &info,
+    let planned = plan_study(
+        path,
+        options.replicas,
+        options.quick,
+        options.yes,
+        options.out.as_ref(),
     )?;
-
-    let counts = RunCounts {
-        planned: runs.len(),
-        done: report.ran,
-        failed: report.failed,
-        resumed: report.resumed,
-    };
-    let mut outputs = staging.files()?;
-    outputs.push(publish::MANIFEST.to_string());
-    outputs.sort();
-    let manifest = Manifest {
-        bonkers_version: info.version,
+    let _lock = claim(&planned.out_dir)?;
+    let (mut report, runs_wall_seconds) =
+        compute(&planned, Subset::All, options, true, simulate, stop)?;
+    let invocation = Invocation {
         command_line: options.command_line.clone(),
-        started: info.started,
-        finished: info.finished,
-        threads: info.threads,
-        runs: counts,
-        overrides: loaded
-            .overrides
-            .iter()
-            .map(|(k, v)| (k.clone(), load::show(v)))
-            .collect(),
-        descriptor_toml: loaded.text_as_run(),
-        descriptor: serde_json::to_value(&loaded.descriptor).unwrap_or_default(),
-        outputs,
+        started,
+        clock,
+        threads: report.threads,
+        runs_wall_seconds,
+        ran: report.ran,
+        rerun: run_command(
+            path,
+            &planned.out_dir,
+            options.quick,
+            options.replicas,
+            options.yes,
+        ),
     };
-    let json = manifest.to_json().context("cannot encode manifest.json")?;
-    crate::files::write_atomic(&staging.dir().join(publish::MANIFEST), json.as_bytes())?;
-    staging.publish()?;
+    let Planned {
+        loaded,
+        specs,
+        out_dir,
+    } = planned;
+    let records = std::mem::take(&mut report.records);
+    collect::collect(&loaded, specs, records, &out_dir, &invocation)?;
     Ok(StudyOutcome {
         out_dir,
-        planned: counts.planned,
-        ran: counts.done,
-        failed: counts.failed,
-        resumed: counts.resumed,
+        planned: report.picked,
+        ran: report.ran,
+        failed: report.failed,
+        resumed: report.resumed,
     })
 }
 
-/// Per sweep point and result: ensemble statistics beside theory.
-fn summarize(runs: &[(RunSpec, RunOutput)]) -> Vec<SummaryRow> {
-    crate::stats::summary::summarize(runs, &crate::studies::theory)
+/// Run only the runs `subset` picks from the plan at `path`, into records
+/// under `OUT/runs/`, resuming like `run_study`; records of the plan's other
+/// runs stay. No tables: `collect_study` makes them once every run is done.
+pub fn run_part(
+    path: &Path,
+    options: &StudyOptions,
+    subset: Subset<'_>,
+    simulate: &SimulateFn<'_>,
+    stop: &AtomicBool,
+) -> Result<RunnerReport, StudyError> {
+    let planned = plan_study(
+        path,
+        options.replicas,
+        options.quick,
+        options.yes,
+        options.out.as_ref(),
+    )?;
+    let _lock = claim(&planned.out_dir)?;
+    Ok(compute(&planned, subset, options, false, simulate, stop)?.0)
 }
 
-fn write_report(
-    out_dir: &Path,
-    loaded: &Loaded,
-    runs: &[(RunSpec, RunOutput)],
-    summary: &[SummaryRow],
-    sections: &[crate::model::report::ReportSection],
-    meta: &ReportMeta,
-) -> anyhow::Result<()> {
-    crate::report::write(out_dir, &loaded.descriptor, runs, summary, sections, meta)
+/// `study collect`: the records of the plan at `path`, stored in its output
+/// folder, into tables, report and manifest, running nothing. Missing runs
+/// are an error that lists them (`collect::MissingRuns`); a folder that
+/// does not exist is not created.
+pub fn collect_study(path: &Path, options: &CollectOptions) -> Result<Collected, StudyError> {
+    let started = SystemTime::now();
+    let clock = Instant::now();
+    let planned = plan_study(
+        path,
+        options.replicas,
+        options.quick,
+        options.yes,
+        options.out.as_ref(),
+    )?;
+    let invocation = Invocation {
+        command_line: options.command_line.clone(),
+        started,
+        clock,
+        threads: 1,
+        runs_wall_seconds: 0.0,
+        ran: 0,
+        rerun: run_command(
+            path,
+            &planned.out_dir,
+            options.quick,
+            options.replicas,
+            options.yes,
+        ),
+    };
+    let _lock = if planned.out_dir.is_dir() {
+        Some(claim(&planned.out_dir)?)
+    } else {
+        None
+    };
+    collect::collect(
+        &planned.loaded,
+        planned.specs,
+        Vec::new(),
+        &planned.out_dir,
+        &invocation,
+    )
 }

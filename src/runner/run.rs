@@ -1,7 +1,10 @@
-//! Run the plan in parallel. Each finished run is saved as its own file
-//! (`OUT/runs/run-<seed>.json`, written atomically) so an interrupted study
-//! resumes where it stopped; a failing or panicking run is recorded and the
-//! others go on.
+//! Compute runs of a plan into run records, and nothing else: each finished
+//! run is saved as its own file (`OUT/runs/run-<seed>.json`, written
+//! atomically), so an interrupted study resumes where it stopped and a later
+//! step (`collect.rs`) can make the tables from the files alone. A failing or
+//! panicking run is recorded and the others go on. A call computes the whole
+//! plan or a subset of it and leaves the other runs' records alone, so
+//! invocations that split a plan between them add up to one whole run.
 
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
@@ -9,7 +12,7 @@ use crate::runner::cpu_time::thread_cpu_seconds;
 use crate::runner::progress::{Progress, ProgressMode};
 pub use crate::runner::record::RunRecord;
 use crate::runner::seeds::fnv1a;
-use anyhow::Context;
+use anyhow::{Context, bail};
 use rayon::prelude::*;
 use std::collections::HashSet;
 use std::panic::{AssertUnwindSafe, catch_unwind};
@@ -27,19 +30,70 @@ pub struct RunnerOptions {
     /// Discard saved runs first instead of resuming from them.
     pub fresh: bool,
     pub progress: ProgressMode,
+    /// Also hand back the picked runs' records, resumed or made now, so a
+    /// collect that follows need not parse their files again (seconds for a
+    /// large study); off, the runner holds no run's outputs after saving it.
+    pub keep: bool,
 }
 
-/// What the runner did.
+/// Which runs of a plan one call computes.
+#[derive(Clone, Copy)]
+pub enum Subset<'a> {
+    All,
+    /// The runs with these ids (the `run_id` column).
+    Ids(&'a [u64]),
+    /// The runs this picks, e.g. one shard of the plan.
+    Matching(&'a (dyn Fn(&RunSpec) -> bool + Sync)),
+}
+
+impl Subset<'_> {
+    /// Indices into `specs` of the runs picked, in plan order; an id the
+    /// plan does not have is an error rather than silently nothing.
+    pub fn pick(&self, specs: &[RunSpec]) -> anyhow::Result<Vec<usize>> {
+        let indices = 0..specs.len();
+        Ok(match self {
+            Subset::All => indices.collect(),
+            Subset::Ids(ids) => {
+                let wanted: HashSet<u64> = ids.iter().copied().collect();
+                let planned: HashSet<u64> = specs.iter().map(|s| s.run_id).collect();
+                if let Some(id) = ids.iter().find(|id| !planned.contains(id)) {
+                    bail!(
+                        "run {id} is not in the plan, whose runs are 0 to {}",
+                        specs.len().saturating_sub(1)
+                    );
+                }
+                indices
+                    .filter(|&i| wanted.contains(&specs[i].run_id))
+                    .collect()
+            }
+            Subset::Matching(picks) => indices.filter(|&i| picks(&specs[i])).collect(),
+        })
+    }
+}
+
+/// What the runner did with the runs it was given.
 #[derive(Debug, Clone)]
 pub struct RunnerReport {
-    /// One record per planned run, in plan order; None for runs not done
-    /// because the study was interrupted.
-    pub records: Vec<Option<RunRecord>>,
+    /// Runs picked from the plan.
+    pub picked: usize,
+    /// Run now, failed ones included.
     pub ran: usize,
     pub failed: usize,
+    /// Picked runs whose record an earlier invocation saved.
     pub resumed: usize,
+    /// Some picked runs were not started because `stop` was raised.
     pub interrupted: bool,
     pub threads: usize,
+    /// With `RunnerOptions::keep`: the record of each picked run that has
+    /// one, by its position in the plan (None for the others); else empty.
+    pub records: Vec<Option<RunRecord>>,
+}
+
+impl RunnerReport {
+    /// Picked runs that now have a record.
+    pub fn kept(&self) -> usize {
+        self.resumed + self.ran
+    }
 }
 
 /// The fingerprint of a planned run: a hash of everything that decides what
@@ -84,17 +138,51 @@ pub fn run_all(
     options: &RunnerOptions,
     stop: &AtomicBool,
 ) -> anyhow::Result<RunnerReport> {
+    run_subset(specs, Subset::All, out_dir, simulate, options, stop)
+}
+
+/// Run the runs of the plan `specs` that `subset` picks and that are not
+/// already saved. Records of the plan's other runs are kept, whatever
+/// `options.fresh` says; files of no planned run are removed.
+pub fn run_subset(
+    specs: &[RunSpec],
+    subset: Subset<'_>,
+    out_dir: &Path,
+    simulate: &SimulateFn<'_>,
+    options: &RunnerOptions,
+    stop: &AtomicBool,
+) -> anyhow::Result<RunnerReport> {
+    let picked = subset.pick(specs)?;
     let dir = runs_dir(out_dir);
-    if options.fresh && dir.exists() {
-        std::fs::remove_dir_all(&dir)
-            .with_context(|| format!("cannot remove {}", dir.display()))?;
+    if options.fresh {
+        discard(specs, &picked, out_dir)?;
     }
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    let tidied = tidy(specs, out_dir)?;
+    let mut tidied = tidy(specs, out_dir)?;
 
-    let saved: Vec<Option<RunRecord>> = specs.iter().map(|s| load_saved(out_dir, s)).collect();
-    let resumed = saved.iter().filter(|r| r.is_some()).count();
-    let todo: Vec<usize> = (0..specs.len()).filter(|&i| saved[i].is_none()).collect();
+    // Each saved record is read once, to learn whether it can be reused.
+    let mut records: Vec<Option<RunRecord>> = Vec::new();
+    if options.keep {
+        records.resize(specs.len(), None);
+    }
+    let mut todo = Vec::new();
+    for &i in &picked {
+        match read_record(out_dir, &specs[i]) {
+            Stored::Found(record)
+                if record.ok() && record.fingerprint == fingerprint(&specs[i]) =>
+            {
+                if options.keep {
+                    records[i] = Some(record);
+                }
+            }
+            Stored::Found(record) => {
+                tidied.mismatched += usize::from(record.ok());
+                todo.push(i);
+            }
+            Stored::Missing | Stored::Unreadable(_) => todo.push(i),
+        }
+    }
+    let resumed = picked.len() - todo.len();
     if options.progress != ProgressMode::Quiet
         && let Some(note) = tidied.note(resumed)
     {
@@ -111,7 +199,8 @@ pub fn run_all(
         .context("cannot start the worker threads")?;
     let progress = Progress::new(todo.len() as u64, options.progress);
 
-    let fresh_records: Vec<anyhow::Result<Option<RunRecord>>> = pool.install(|| {
+    // Some per run done; None for a run `stop` kept from starting.
+    let done: Vec<anyhow::Result<Option<RunRecord>>> = pool.install(|| {
         todo.par_iter()
             .map(|&i| {
                 if stop.load(Ordering::SeqCst) {
@@ -126,24 +215,52 @@ pub fn run_all(
     });
     progress.finish();
 
-    let mut records = saved;
-    let (mut ran, mut failed) = (0, 0);
-    for (&i, result) in todo.iter().zip(fresh_records) {
-        if let Some(record) = result? {
-            ran += 1;
-            failed += usize::from(!record.ok());
-            records[i] = Some(record);
+    let (mut ran, mut failed, mut interrupted) = (0, 0, false);
+    for (&i, result) in todo.iter().zip(done) {
+        match result? {
+            Some(record) => {
+                ran += 1;
+                failed += usize::from(!record.ok());
+                if options.keep {
+                    records[i] = Some(record);
+                }
+            }
+            None => interrupted = true,
         }
     }
-    let interrupted = records.iter().any(Option::is_none);
     Ok(RunnerReport {
-        records,
+        picked: picked.len(),
         ran,
         failed,
         resumed,
         interrupted,
         threads,
+        records,
     })
+}
+
+/// `--fresh`: forget the saved records of the picked runs. For the whole plan
+/// that is the whole runs folder; for a subset only its own records, since
+/// the others may belong to another invocation sharing the folder.
+fn discard(specs: &[RunSpec], picked: &[usize], out_dir: &Path) -> anyhow::Result<()> {
+    let dir = runs_dir(out_dir);
+    if !dir.exists() {
+        return Ok(());
+    }
+    if picked.len() == specs.len() {
+        return std::fs::remove_dir_all(&dir)
+            .with_context(|| format!("cannot remove {}", dir.display()));
+    }
+    for &i in picked {
+        let path = run_file(out_dir, specs[i].seed);
+        match std::fs::remove_file(&path) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+                return Err(e).with_context(|| format!("cannot remove {}", path.display()));
+            }
+            _ => {}
+        }
+    }
+    Ok(())
 }
 
 /// What `tidy` found among the saved runs.
@@ -179,8 +296,7 @@ impl Tidied {
 }
 
 /// Remove temporary files an interrupted writer left and run files of no
-/// planned run (so the saved runs are those of this study), and count saved
-/// runs that no longer match their plan entry.
+/// planned run, so the saved runs are those of this study.
 fn tidy(specs: &[RunSpec], out_dir: &Path) -> anyhow::Result<Tidied> {
     let planned: HashSet<PathBuf> = specs.iter().map(|s| run_file(out_dir, s.seed)).collect();
     let mut tidied = Tidied::default();
@@ -195,16 +311,6 @@ fn tidy(specs: &[RunSpec], out_dir: &Path) -> anyhow::Result<Tidied> {
             std::fs::remove_file(&path)
                 .with_context(|| format!("cannot remove {}", path.display()))?;
             tidied.removed += usize::from(!temporary);
-        }
-    }
-    for spec in specs {
-        let text = std::fs::read_to_string(run_file(out_dir, spec.seed));
-        if let Ok(record) = text.as_deref().map(RunRecord::from_json)
-            && let Ok(record) = record
-            && record.ok()
-            && record.fingerprint != fingerprint(spec)
-        {
-            tidied.mismatched += 1;
         }
     }
     Ok(tidied)
@@ -245,14 +351,35 @@ fn panic_message(panic: &(dyn std::any::Any + Send)) -> String {
     }
 }
 
-/// A saved successful run of exactly this plan entry, if any (its run id
-/// is this plan's: ids shift when the sweep or replica count changes).
-/// Failed runs are not reused: a rerun retries them.
-fn load_saved(out_dir: &Path, spec: &RunSpec) -> Option<RunRecord> {
-    let text = std::fs::read_to_string(run_file(out_dir, spec.seed)).ok()?;
-    let mut record = RunRecord::from_json(&text).ok()?;
-    record.run_id = spec.run_id;
-    (record.ok() && record.fingerprint == fingerprint(spec)).then_some(record)
+/// A planned run's record file, as found.
+#[derive(Debug)]
+pub enum Stored {
+    /// No file.
+    Missing,
+    /// A file that does not parse (the message says why).
+    Unreadable(String),
+    /// A record, ok or failed, with the plan's run id (ids shift when the
+    /// sweep or replica count changes; the seed, which names the file, does
+    /// not). Whether this plan would run exactly the same is up to the
+    /// caller: compare its fingerprint with `fingerprint(spec)`.
+    Found(RunRecord),
+}
+
+/// Read the record saved for `spec`, if any.
+pub fn read_record(out_dir: &Path, spec: &RunSpec) -> Stored {
+    let path = run_file(out_dir, spec.seed);
+    let text = match std::fs::read_to_string(&path) {
+        Ok(text) => text,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Stored::Missing,
+        Err(e) => return Stored::Unreadable(format!("cannot read {}: {e}", path.display())),
+    };
+    match RunRecord::from_json(&text) {
+        Ok(mut record) => {
+            record.run_id = spec.run_id;
+            Stored::Found(record)
+        }
+        Err(e) => Stored::Unreadable(format!("{} does not parse: {e}", path.display())),
+    }
 }
 
 fn save(out_dir: &Path, spec: &RunSpec, record: &RunRecord) -> anyhow::Result<()> {

@@ -4,6 +4,8 @@
 
 use bonkers::model::run_output::{Histogram, RunOutput, Series};
 use bonkers::model::run_spec::RunSpec;
+use bonkers::runner::store::read_parquet;
+use polars::prelude::DataFrame;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
@@ -116,5 +118,41 @@ impl Interrupting {
             self.stop.store(true, Ordering::SeqCst);
         }
         fake(spec)
+    }
+}
+
+/// Every table of `dir` without the timing columns, which legitimately vary.
+pub fn tables(dir: &Path) -> Vec<(String, DataFrame)> {
+    [
+        "runs.parquet",
+        "series.parquet",
+        "histograms.parquet",
+        "summary.parquet",
+    ]
+    .iter()
+    .map(|name| {
+        let mut df = read_parquet(&dir.join(name)).unwrap();
+        for col in ["wall_seconds", "cpu_seconds", "prepare_seconds"] {
+            if df.column(col).is_ok() {
+                df = df.drop(col).unwrap();
+            }
+        }
+        (name.to_string(), df)
+    })
+    .collect()
+}
+
+pub fn assert_same(a: &[(String, DataFrame)], b: &[(String, DataFrame)]) {
+    assert_eq!(a.len(), b.len());
+    for ((name, x), (_, y)) in a.iter().zip(b) {
+        assert_eq!(x.get_column_names(), y.get_column_names(), "{name}");
+        assert_eq!(x.height(), y.height(), "{name}");
+        for (cx, cy) in x.columns().iter().zip(y.columns()) {
+            assert!(
+                cx.equals_missing(cy),
+                "{name}: column {} differs",
+                cx.name()
+            );
+        }
     }
 }

@@ -1,0 +1,358 @@
+//! Collect: the stored run records of a plan -> tables, report and manifest,
+//! published as one set (`publish.rs`). It runs nothing. A planned run
+//! without a usable record is listed, with the command that runs it, and
+//! nothing is written; failed runs are listed and kept in the tables, as
+//! their status.
+//!
+//! Memory: records are read one at a time (or taken from the runner, which
+//! `study run` lets hold them), and once a run is found missing none is kept.
+//! The statistics are made one sweep point at a time. The tables, the
+//! studies' sections and the report take every run at once
+//! (`store::write_tables`, `studies::sections`, `report::write`), so all
+//! records of the plan are held together once, and moved, not copied, from
+//! the tables to the report.
+
+use crate::descriptor::errors::StudyError;
+use crate::descriptor::load::{self, Loaded};
+use crate::model::run_output::RunOutput;
+use crate::model::run_spec::RunSpec;
+use crate::model::summary::SummaryRow;
+use crate::report::ReportMeta;
+use crate::runner::manifest::{Manifest, RunCounts, rfc3339, version};
+use crate::runner::publish::{self, Staging};
+use crate::runner::record::RunRecord;
+use crate::runner::run::{Stored, fingerprint, read_record};
+use crate::runner::store;
+use anyhow::Context;
+use std::fmt;
+use std::path::{Path, PathBuf};
+use std::time::{Instant, SystemTime};
+
+/// The invocation that collects, as the report and the manifest tell it.
+#[derive(Debug, Clone)]
+pub struct Invocation {
+    pub command_line: Vec<String>,
+    pub started: SystemTime,
+    /// Started with the invocation: the report's total wall time.
+    pub clock: Instant,
+    /// Worker threads of the runs this invocation ran (1 if it ran none).
+    pub threads: usize,
+    /// Wall time spent running runs, and how many ran (the rest were saved
+    /// by earlier invocations).
+    pub runs_wall_seconds: f64,
+    pub ran: usize,
+    /// The command that runs what is missing, shown when something is.
+    pub rerun: String,
+}
+
+/// A planned run that has no usable record, or whose record says it failed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Unfinished {
+    pub run_id: u64,
+    pub point_id: u64,
+    pub replica: u32,
+    pub seed: u64,
+    /// The point's swept values, e.g. "scene.piston.mass = 10.0".
+    pub point: String,
+    /// "no record", why the record cannot be used, or the failed status.
+    pub why: String,
+}
+
+impl Unfinished {
+    fn of(spec: &RunSpec, why: String) -> Unfinished {
+        Unfinished {
+            run_id: spec.run_id,
+            point_id: spec.point_id,
+            replica: spec.replica,
+            seed: spec.seed,
+            point: spec
+                .params
+                .iter()
+                .map(|(k, v)| format!("{k} = {}", load::show(v)))
+                .collect::<Vec<_>>()
+                .join(", "),
+            why,
+        }
+    }
+}
+
+impl fmt::Display for Unfinished {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let point = if self.point.is_empty() {
+            String::new()
+        } else {
+            format!(": {}", self.point)
+        };
+        write!(
+            f,
+            "run {} (point {}{point}; replica {}; seed {}): {}",
+            self.run_id, self.point_id, self.replica, self.seed, self.why
+        )
+    }
+}
+
+/// Collect refused: these planned runs have no usable record.
+#[derive(Debug, Clone)]
+pub struct MissingRuns {
+    pub out_dir: PathBuf,
+    pub planned: usize,
+    pub missing: Vec<Unfinished>,
+    /// The command that runs them (and keeps the runs already saved).
+    pub rerun: String,
+}
+
+impl fmt::Display for MissingRuns {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(
+            f,
+            "{} of the {} planned runs have no usable record in {}, so nothing was written:",
+            self.missing.len(),
+            self.planned,
+            self.out_dir.display()
+        )?;
+        f.write_str(&listing(&self.missing))?;
+        write!(f, "  hint: run them with `{}`", self.rerun)
+    }
+}
+
+impl std::error::Error for MissingRuns {}
+
+/// Lines listed in full; the rest are summed up by their ids.
+const LISTED: usize = 20;
+
+/// One indented line per run, the first `LISTED` of them, then the ids of
+/// the others as ranges.
+pub fn listing(runs: &[Unfinished]) -> String {
+    let mut out = String::new();
+    for run in runs.iter().take(LISTED) {
+        out += &format!("  {run}\n");
+    }
+    if runs.len() > LISTED {
+        let ids: Vec<u64> = runs[LISTED..].iter().map(|r| r.run_id).collect();
+        out += &format!(
+            "  and {} more: runs {}\n",
+            runs.len() - LISTED,
+            id_ranges(&ids)
+        );
+    }
+    out
+}
+
+/// Ascending ids as "0-4, 7, 9-10".
+fn id_ranges(ids: &[u64]) -> String {
+    let mut parts: Vec<String> = Vec::new();
+    let mut i = 0;
+    while i < ids.len() {
+        let mut j = i;
+        while j + 1 < ids.len() && ids[j + 1] == ids[j] + 1 {
+            j += 1;
+        }
+        parts.push(if j == i {
+            ids[i].to_string()
+        } else {
+            format!("{}-{}", ids[i], ids[j])
+        });
+        i = j + 1;
+    }
+    parts.join(", ")
+}
+
+/// What a collect made.
+#[derive(Debug, Clone)]
+pub struct Collected {
+    pub out_dir: PathBuf,
+    pub planned: usize,
+    /// Run by this invocation, and saved by earlier ones.
+    pub ran: usize,
+    pub resumed: usize,
+    /// Runs whose record says they failed: in runs.parquet with their
+    /// status, absent from the statistics.
+    pub failed: Vec<Unfinished>,
+}
+
+/// The records of every run of the plan `specs`, in plan order.
+struct Records {
+    /// Empty once a run is missing: nothing will be written.
+    runs: Vec<(RunSpec, RunRecord)>,
+    missing: Vec<Unfinished>,
+    failed: Vec<Unfinished>,
+}
+
+/// Read the records one at a time, taking those in `held` (by plan
+/// position) from there; a record made by another descriptor or bonkers
+/// version, or one that does not parse, counts as missing.
+fn read_all(specs: Vec<RunSpec>, mut held: Vec<Option<RunRecord>>, out_dir: &Path) -> Records {
+    let mut records = Records {
+        runs: Vec::new(),
+        missing: Vec::new(),
+        failed: Vec::new(),
+    };
+    for (i, spec) in specs.into_iter().enumerate() {
+        let stored = match held.get_mut(i).and_then(Option::take) {
+            Some(record) => Stored::Found(record),
+            None => read_record(out_dir, &spec),
+        };
+        let why = match stored {
+            Stored::Found(record) if record.fingerprint == fingerprint(&spec) => {
+                if !record.ok() {
+                    records
+                        .failed
+                        .push(Unfinished::of(&spec, record.status.clone()));
+                }
+                if records.missing.is_empty() {
+                    records.runs.push((spec, record));
+                }
+                continue;
+            }
+            Stored::Found(_) => {
+                "its record was made by another descriptor or bonkers version".to_string()
+            }
+            Stored::Unreadable(e) => format!("its record is unreadable: {e}"),
+            Stored::Missing => "no record".to_string(),
+        };
+        records.missing.push(Unfinished::of(&spec, why));
+        records.runs = Vec::new();
+    }
+    records
+}
+
+/// Collect the records of the plan `specs` saved in `out_dir` into the
+/// tables, report and manifest there. `held` may hold records already in
+/// memory, by plan position (the same as their files; empty: read every file).
+/// The caller holds the out dir's lock.
+pub fn collect(
+    loaded: &Loaded,
+    specs: Vec<RunSpec>,
+    held: Vec<Option<RunRecord>>,
+    out_dir: &Path,
+    invocation: &Invocation,
+) -> Result<Collected, StudyError> {
+    let planned = specs.len();
+    let Records {
+        runs,
+        missing,
+        failed,
+    } = read_all(specs, held, out_dir);
+    if !missing.is_empty() {
+        return Err(StudyError::Other(anyhow::Error::new(MissingRuns {
+            out_dir: out_dir.to_path_buf(),
+            planned,
+            missing,
+            rerun: invocation.rerun.clone(),
+        })));
+    }
+
+    let staging = Staging::create(out_dir)?;
+    let summary = summarize(&runs);
+    store::write_tables(staging.dir(), &runs, &summary)?;
+    let failed_runs: Vec<(u64, String)> = runs
+        .iter()
+        .filter(|(_, r)| !r.ok())
+        .map(|(s, r)| (s.run_id, r.status.clone()))
+        .collect();
+    let succeeded: Vec<(RunSpec, RunOutput)> = runs
+        .into_iter()
+        .filter(|(_, r)| r.ok())
+        .map(|(s, r)| (s, r.output))
+        .collect();
+    let sections = crate::studies::sections(&loaded.descriptor, &succeeded)?;
+    let resumed = planned.saturating_sub(invocation.ran);
+    let meta = ReportMeta {
+        command: invocation.command_line.join(" "),
+        threads: invocation.threads,
+        started: rfc3339(invocation.started),
+        finished: rfc3339(SystemTime::now()),
+        version: version().to_string(),
+        total_wall_seconds: invocation.clock.elapsed().as_secs_f64(),
+        runs_wall_seconds: invocation.runs_wall_seconds,
+        resumed_runs: resumed,
+        planned_runs: planned,
+        failed_runs,
+    };
+    crate::report::write(
+        staging.dir(),
+        &loaded.descriptor,
+        &succeeded,
+        &summary,
+        &sections,
+        &meta,
+    )?;
+
+    let counts = RunCounts {
+        planned,
+        done: invocation.ran,
+        failed: failed.len(),
+        resumed,
+    };
+    write_manifest(&staging, loaded, invocation, meta, counts)?;
+    staging.publish()?;
+    Ok(Collected {
+        out_dir: out_dir.to_path_buf(),
+        planned,
+        ran: invocation.ran,
+        resumed,
+        failed,
+    })
+}
+
+/// Per sweep point and result: ensemble statistics of the successful runs
+/// beside theory. One point at a time, so only that point's outputs are
+/// copied; the plan keeps each point's runs together, in point order.
+fn summarize(runs: &[(RunSpec, RunRecord)]) -> Vec<SummaryRow> {
+    let mut rows = Vec::new();
+    for point in runs.chunk_by(|a, b| a.0.point_id == b.0.point_id) {
+        let succeeded: Vec<(RunSpec, RunOutput)> = point
+            .iter()
+            .filter(|(_, r)| r.ok())
+            .map(|(s, r)| (s.clone(), r.output.clone()))
+            .collect();
+        rows.extend(crate::stats::summary::summarize(
+            &succeeded,
+            &crate::studies::theory,
+        ));
+    }
+    rows
+}
+
+/// The manifest lists the staged files and itself, and is staged last.
+fn write_manifest(
+    staging: &Staging,
+    loaded: &Loaded,
+    invocation: &Invocation,
+    meta: ReportMeta,
+    counts: RunCounts,
+) -> anyhow::Result<()> {
+    let mut outputs = staging.files()?;
+    outputs.push(publish::MANIFEST.to_string());
+    outputs.sort();
+    let manifest = Manifest {
+        bonkers_version: meta.version,
+        command_line: invocation.command_line.clone(),
+        started: meta.started,
+        finished: meta.finished,
+        threads: meta.threads,
+        runs: counts,
+        overrides: loaded
+            .overrides
+            .iter()
+            .map(|(k, v)| (k.clone(), load::show(v)))
+            .collect(),
+        descriptor_toml: loaded.text_as_run(),
+        descriptor: serde_json::to_value(&loaded.descriptor).unwrap_or_default(),
+        outputs,
+    };
+    let json = manifest.to_json().context("cannot encode manifest.json")?;
+    crate::files::write_atomic(&staging.dir().join(publish::MANIFEST), json.as_bytes())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::id_ranges;
+
+    #[test]
+    fn ids_are_shown_as_ranges() {
+        assert_eq!(id_ranges(&[0, 1, 2, 3, 4, 7, 9, 10]), "0-4, 7, 9-10");
+        assert_eq!(id_ranges(&[5]), "5");
+        assert_eq!(id_ranges(&[]), "");
+    }
+}
