@@ -7,14 +7,28 @@ use crate::model::run_spec::RunSpec;
 use crate::model::summary::SummaryRow;
 use crate::runner::record::RunRecord;
 use anyhow::Context;
-use polars::prelude::{Column, DataFrame, ParquetReader, ParquetWriter, SerReader};
+use polars::prelude::{
+    Column, CompatLevel, DataFrame, KeyValueMetadata, ParquetReader, ParquetWriter, SchemaExt,
+    SerReader,
+};
+use polars_parquet::write::schema_to_metadata_key;
 use std::collections::{BTreeMap, HashSet};
 use std::path::{Path, PathBuf};
 
 /// Write `df` as Parquet at `path`, atomically.
+///
+/// Text is stored as Parquet UTF-8 either way; the Arrow schema kept in the
+/// file's metadata tells readers which Arrow type to give it. Polars writes
+/// its own string-view type there, which pyarrow reads but cannot sort or
+/// filter, so we store the schema of the oldest Arrow compatibility level
+/// instead (`large_string`), which every Arrow tool can query.
 pub fn write_parquet(path: &Path, df: &mut DataFrame) -> anyhow::Result<()> {
+    let schema = schema_to_metadata_key(&df.schema().to_arrow(CompatLevel::oldest()));
+    let metadata = KeyValueMetadata::Static(vec![schema]);
     write_via_temp(path, |file| {
-        ParquetWriter::new(file).finish(df)?;
+        ParquetWriter::new(file)
+            .with_key_value_metadata(Some(metadata))
+            .finish(df)?;
         Ok(())
     })
 }
