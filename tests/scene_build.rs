@@ -1,7 +1,9 @@
 //! Scenes: placement, velocities, the seeds' bundled scenes, and the errors
 //! for impossible requests.
 
-use bonkers::engine::{Chain, NeighbourList, Observer, Simulation, Stop, WallHit};
+use bonkers::engine::{
+    Axis, Chain, NeighbourList, Observer, Particle, SimBox, Simulation, Stop, WallHit,
+};
 use bonkers::model::scene::SceneSpec;
 use bonkers::scene::{Built, build, presets, resolve};
 use rand::SeedableRng;
@@ -252,11 +254,20 @@ fn impossible_requests_are_clear_errors() {
     let err =
         resolve(&toml::from_str::<SceneSpec>("preset = \"mackay-pistn\"").unwrap()).unwrap_err();
     assert!(err.contains("mackay-piston"), "{err}");
-    // Overlapping explicit positions are refused by the engine with both indices.
-    let b = built::<2>("dimension = 2\nbox = [10.0, 10.0]\nspecies = [{ name = \"a\", count = 2 }]\nplacement = { kind = \"explicit\", positions = [[2.0, 2.0], [2.5, 2.0]] }\n", 1).unwrap();
-    let err = Simulation::<2, NeighbourList<2>, ()>::new(b.particles, b.sim_box, (), 1)
-        .unwrap_err()
-        .to_string();
+    // Overlapping explicit positions are refused with both indices before
+    // anything is built (the scene's checks, which validation runs too)...
+    let err = built::<2>("dimension = 2\nbox = [10.0, 10.0]\nspecies = [{ name = \"a\", count = 2 }]\nplacement = { kind = \"explicit\", positions = [[2.0, 2.0], [2.5, 2.0]] }\n", 1).unwrap_err();
+    assert!(err.contains("particles 0 and 1 overlap"), "{err}");
+    // ...and by the engine, for particles made by hand.
+    let disk = |x: f64| Particle::new([x, 2.0], [0.0; 2], 1.0, 0.5);
+    let sim_box = SimBox {
+        size: [10.0; 2],
+        axes: [Axis::HARD; 2],
+    };
+    let err =
+        Simulation::<2, NeighbourList<2>, ()>::new(vec![disk(2.0), disk(2.5)], sim_box, (), 1)
+            .unwrap_err()
+            .to_string();
     assert!(err.contains("particles 0 and 1 overlap"), "{err}");
 }
 

@@ -4,40 +4,7 @@
 use crate::model::descriptor::{Descriptor, Scale, SweepMode, SweepValues};
 use crate::model::scene::SceneSpec;
 
-/// One problem: the key it concerns, what is wrong, what would be right.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Problem {
-    pub key: String,
-    pub message: String,
-    pub hint: Option<String>,
-}
-
-pub type Check = Result<(), Problem>;
-
-pub fn bad(key: impl Into<String>, message: impl Into<String>, hint: Option<&str>) -> Check {
-    Err(Problem {
-        key: key.into(),
-        message: message.into(),
-        hint: hint.map(str::to_string),
-    })
-}
-
-pub fn positive(key: &str, v: f64) -> Check {
-    if v.is_finite() && v > 0.0 {
-        Ok(())
-    } else {
-        bad(key, format!("must be a positive number, got {v}"), None)
-    }
-}
-
-/// Radii may be 0: point particles (an ideal gas, or MacKay's point rods).
-pub fn non_negative(key: &str, v: f64) -> Check {
-    if v.is_finite() && v >= 0.0 {
-        Ok(())
-    } else {
-        bad(key, format!("must be a number >= 0, got {v}"), None)
-    }
-}
+pub use crate::model::problem::{Check, Problem, bad, non_negative, positive};
 
 /// Top-level sections a sweep may set. `[study]` is not among them: replicas
 /// and seeds shape the plan itself, so they cannot vary within it.

@@ -5,6 +5,7 @@
 pub mod chart;
 pub mod descriptor;
 pub mod need;
+pub mod problem;
 pub mod report;
 pub mod run_output;
 pub mod run_spec;

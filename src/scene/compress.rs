@@ -79,19 +79,8 @@ pub fn compress<const D: usize>(
     rng: &mut ChaCha8Rng,
 ) -> Result<(Vec<[f64; D]>, Preparation), String> {
     let started = Instant::now();
+    // The rate is positive and every particle movable: see `check`.
     let rate = settings.growth_rate;
-    if !(rate.is_finite() && rate > 0.0) {
-        return Err(format!(
-            "placement.growth_rate must be a positive number, got {rate} (default {GROWTH_RATE})"
-        ));
-    }
-    if inv_mass.contains(&0.0) {
-        return Err(
-            "compression moves every particle, so it cannot hold immovable (infinite-mass) ones; \
-             place them with `placement = { kind = \"explicit\" }`"
-                .into(),
-        );
-    }
     let target = densest_region(slots, names)?;
     let box_phi = |scale: f64| {
         slots

@@ -10,6 +10,8 @@
 //! Species with the same region share one lattice; species whose regions
 //! overlap otherwise cannot, and are refused.
 
+use super::refusal::{Blame, Refusal};
+use super::slots::{Group, singles};
 use super::space::{Slot, Space, ball_volume, region_volume};
 use rand::seq::SliceRandom;
 use rand_chacha::ChaCha8Rng;
@@ -60,57 +62,16 @@ pub fn place<const D: usize>(
     rng: &mut ChaCha8Rng,
 ) -> Result<Vec<[f64; D]>, String> {
     let kind = kind(D, lattice)?;
-    let mut groups: Vec<Vec<usize>> = Vec::new();
-    for (i, s) in slots.iter().enumerate() {
-        match groups.iter_mut().find(|g| slots[g[0]].same_region(s)) {
-            Some(g) => g.push(i),
-            None => groups.push(vec![i]),
-        }
-    }
-    for (a, ga) in groups.iter().enumerate() {
-        for gb in &groups[a + 1..] {
-            let (s, t) = (&slots[ga[0]], &slots[gb[0]]);
-            if (0..D).all(|k| s.lo[k] < t.hi[k] && t.lo[k] < s.hi[k]) {
-                return Err(format!(
-                    "species `{}` and `{}` have regions that overlap without being the same, so they \
-                     cannot share a lattice; give them the same region (one lattice, sites shared at \
-                     random) or regions that do not overlap",
-                    name(names, s),
-                    name(names, t)
-                ));
-            }
-        }
-    }
+    let singles = singles(slots);
+    room(&singles, space, lattice, names).map_err(|r| r.to_string())?;
     let mut out = vec![[0.0; D]; slots.len()];
-    for mut members in groups {
+    for mut members in by_region(&singles) {
         let first = slots[members[0]];
         let radius = members.iter().map(|&i| slots[i].radius).fold(0.0, f64::max);
         let fit = Fit::new(&kind, space, &first, radius);
-        let sites = fit.sites(members.len()).map_err(|most| {
-            let species: Vec<String> = members.iter().fold(Vec::new(), |mut v, &i| {
-                let n = format!("`{}`", name(names, &slots[i]));
-                if !v.contains(&n) {
-                    v.push(n);
-                }
-                v
-            });
-            let phi = most as f64 * ball_volume(D, radius) / region_volume(&first.lo, &first.hi);
-            format!(
-                "{} particles of radius {radius} ({}) do not fit on a {} lattice in their region \
-                 {:?} to {:?}: at most {most} fit, packing fraction {phi:.4}; use fewer or smaller \
-                 particles or a larger box{}",
-                members.len(),
-                species.join(", "),
-                kind.name,
-                first.lo,
-                first.hi,
-                if space.periodic.iter().all(|&p| p) {
-                    ""
-                } else {
-                    " (walls take room: periodic boundaries fit more)"
-                }
-            )
-        })?;
+        let sites = fit
+            .sites(members.len())
+            .map_err(|most| crowded(&kind, space, &singles, &members, most, names).to_string())?;
         if members.iter().any(|&i| slots[i].species != first.species) {
             members.shuffle(rng);
         }
@@ -119,6 +80,119 @@ pub fn place<const D: usize>(
         }
     }
     Ok(out)
+}
+
+/// Refuses what no lattice can hold: species whose regions overlap without
+/// being the same (they cannot share a lattice), and more particles than a
+/// region's lattice has sites. The checks ask it species by species, the
+/// placement particle by particle.
+pub fn room<const D: usize>(
+    groups: &[Group<D>],
+    space: &Space<D>,
+    lattice: Option<&str>,
+    names: &[String],
+) -> Result<(), Refusal> {
+    let Ok(kind) = kind(D, lattice) else {
+        // An unknown lattice is the checks' to name, not a matter of room.
+        return Ok(());
+    };
+    let regions = by_region(groups);
+    for (a, ga) in regions.iter().enumerate() {
+        for gb in &regions[a + 1..] {
+            let (s, t) = (&groups[ga[0]].slot, &groups[gb[0]].slot);
+            if (0..D).all(|k| s.lo[k] < t.hi[k] && t.lo[k] < s.hi[k]) {
+                return Err(Refusal {
+                    species: t.species as usize,
+                    blame: Blame::Region,
+                    message: format!(
+                        "species `{}` and `{}` have regions that overlap without being the same, so \
+                         they cannot share a lattice",
+                        name(names, s),
+                        name(names, t)
+                    ),
+                    hint: "give them the same region (one lattice, sites shared at random) or \
+                           regions that do not overlap"
+                        .into(),
+                });
+            }
+        }
+    }
+    for members in &regions {
+        let first = groups[members[0]].slot;
+        let radius = members
+            .iter()
+            .map(|&i| groups[i].slot.radius)
+            .fold(0.0, f64::max);
+        let n: usize = members.iter().map(|&i| groups[i].count).sum();
+        // Point particles always fit: the lattice shrinks to hold them.
+        if radius > 0.0 {
+            let most = Fit::new(&kind, space, &first, radius).count_at(2.0 * radius);
+            if most < n {
+                return Err(crowded(&kind, space, groups, members, most, names));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Groups by region, in order of first appearance: each region's lattice.
+fn by_region<const D: usize>(groups: &[Group<D>]) -> Vec<Vec<usize>> {
+    let mut regions: Vec<Vec<usize>> = Vec::new();
+    for (i, g) in groups.iter().enumerate() {
+        match regions
+            .iter_mut()
+            .find(|r| groups[r[0]].slot.same_region(&g.slot))
+        {
+            Some(r) => r.push(i),
+            None => regions.push(vec![i]),
+        }
+    }
+    regions
+}
+
+/// More particles than a region's lattice holds.
+fn crowded<const D: usize>(
+    kind: &Kind,
+    space: &Space<D>,
+    groups: &[Group<D>],
+    members: &[usize],
+    most: usize,
+    names: &[String],
+) -> Refusal {
+    let first = groups[members[0]].slot;
+    let radius = members
+        .iter()
+        .map(|&i| groups[i].slot.radius)
+        .fold(0.0, f64::max);
+    let n: usize = members.iter().map(|&i| groups[i].count).sum();
+    let species: Vec<String> = members.iter().fold(Vec::new(), |mut v, &i| {
+        let label = format!("`{}`", name(names, &groups[i].slot));
+        if !v.contains(&label) {
+            v.push(label);
+        }
+        v
+    });
+    let phi = most as f64 * ball_volume(D, radius) / region_volume(&first.lo, &first.hi);
+    Refusal {
+        species: first.species as usize,
+        blame: Blame::Count,
+        message: format!(
+            "{n} particles of radius {radius} ({}) do not fit on a {} lattice in their region {:?} \
+             to {:?}: at most {most} fit, packing fraction {phi:.4}",
+            species.join(", "),
+            kind.name,
+            first.lo,
+            first.hi,
+        ),
+        hint: format!(
+            "use fewer or smaller particles or a larger box{}",
+            if space.periodic.iter().all(|&p| p) {
+                ""
+            } else {
+                " (walls take room: periodic boundaries fit more)"
+            }
+        ),
+    }
 }
 
 /// How many particles of this radius the dimension's default lattice

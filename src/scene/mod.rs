@@ -1,13 +1,16 @@
 //! Scenes: the physical setup a run starts from.
 
 pub mod build;
+pub mod check;
 pub mod compress;
 pub mod lattice;
 pub mod piston;
 pub mod placement;
 pub mod presets;
+pub mod refusal;
 pub mod resolve;
 pub mod rods;
+pub mod slots;
 pub mod space;
 pub mod velocities;
 

@@ -1,32 +1,18 @@
-//! The 1D piston: a particle of its own mass, size and starting velocity.
+//! The piston: a particle of its own mass, size and starting velocity (in
+//! 1D a rod, above a wall along x). Its values are checked in `check`.
 
+use super::slots::Piston;
 use super::velocities;
 use crate::model::scene::{PistonSpec, Velocities};
 use rand_chacha::ChaCha8Rng;
 
-/// Where the piston sits on a line of `length`: its extent [x - R, x + R].
-pub fn extent(ps: &PistonSpec, length: f64) -> Result<[f64; 2], String> {
-    if !(ps.mass.is_finite() && ps.mass > 0.0) {
-        return Err(format!(
-            "piston.mass must be a positive number, got {}",
-            ps.mass
-        ));
+/// Where the piston sits in a box of `length` along x.
+pub fn at(ps: &PistonSpec, length: f64) -> Piston {
+    Piston {
+        x: ps.position * length,
+        half: ps.radius,
+        length,
     }
-    if !(ps.radius.is_finite() && ps.radius >= 0.0) {
-        return Err(format!(
-            "piston.radius must be a number >= 0, got {}",
-            ps.radius
-        ));
-    }
-    let x = ps.position * length;
-    if !(ps.position.is_finite() && x - ps.radius >= 0.0 && x + ps.radius <= length) {
-        return Err(format!(
-            "piston.position = {} puts the piston (radius {}) outside the box [0, {length}]; give a \
-             fraction of the box between 0 and 1 that leaves room for its radius",
-            ps.position, ps.radius
-        ));
-    }
-    Ok([x - ps.radius, x + ps.radius])
 }
 
 /// The piston's starting velocity: `energy` times the scene's kT, `velocity`,
@@ -38,13 +24,7 @@ pub fn velocity<const D: usize>(
     rng: &mut ChaCha8Rng,
 ) -> Result<f64, String> {
     match (ps.energy, ps.velocity) {
-        (Some(e), _) if !(e.is_finite() && e >= 0.0) => Err(format!(
-            "piston.energy must be a number >= 0 (a multiple of kT), got {e}"
-        )),
         (Some(e), _) => Ok((2.0 * e * kt / ps.mass).sqrt()),
-        (None, Some(v)) if !v.is_finite() => {
-            Err(format!("piston.velocity must be a finite number, got {v}"))
-        }
         (None, Some(v)) => Ok(v),
         (None, None) => Ok(velocities::one::<D>(rule, 1.0 / ps.mass, rng)?[0]),
     }

@@ -2,6 +2,8 @@
 //! particle uniform in its region among the positions the earlier ones leave
 //! free. (1D is exact at any density: see `rods.rs`.)
 
+use super::refusal::{Blame, Refusal};
+use super::slots::Group;
 use super::space::{CellList, Slot, Space};
 use rand::RngExt;
 use rand_chacha::ChaCha8Rng;
@@ -23,7 +25,7 @@ pub fn random<const D: usize>(
     let mut cells = CellList::new(*space, reach, slots.len())?;
     let mut placed: Vec<[f64; D]> = Vec::with_capacity(slots.len());
     for (i, s) in slots.iter().enumerate() {
-        let ranges = ranges(s, space)?;
+        let ranges = ranges(s, space).map_err(|r| r.to_string())?;
         let mut found = None;
         for _ in 0..TRIES {
             let x: [f64; D] = std::array::from_fn(|k| {
@@ -57,9 +59,17 @@ pub fn random<const D: usize>(
     Ok(placed)
 }
 
+/// Refuses particles wider than their region: the checks ask it species by
+/// species, random insertion particle by particle.
+pub fn room<const D: usize>(groups: &[Group<D>], space: &Space<D>) -> Result<(), Refusal> {
+    groups
+        .iter()
+        .try_for_each(|g| ranges(&g.slot, space).map(|_| ()))
+}
+
 /// Where a particle's centre may go along each axis: anywhere around an
 /// axis its region wraps, otherwise one radius in from the region's ends.
-pub fn ranges<const D: usize>(s: &Slot<D>, space: &Space<D>) -> Result<[(f64, f64); D], String> {
+pub fn ranges<const D: usize>(s: &Slot<D>, space: &Space<D>) -> Result<[(f64, f64); D], Refusal> {
     let mut out = [(0.0, 0.0); D];
     for k in 0..D {
         out[k] = if space.wraps(&s.lo, &s.hi, k) {
@@ -67,12 +77,16 @@ pub fn ranges<const D: usize>(s: &Slot<D>, space: &Space<D>) -> Result<[(f64, f6
         } else if s.hi[k] - s.lo[k] >= 2.0 * s.radius {
             (s.lo[k] + s.radius, s.hi[k] - s.radius)
         } else {
-            return Err(format!(
-                "a particle of radius {} does not fit in its region along axis {k}, which is {} long; \
-                 widen the region or the box",
-                s.radius,
-                s.hi[k] - s.lo[k]
-            ));
+            return Err(Refusal {
+                species: s.species as usize,
+                blame: Blame::Region,
+                message: format!(
+                    "a particle of radius {} does not fit in its region along axis {k}, which is {} long",
+                    s.radius,
+                    s.hi[k] - s.lo[k]
+                ),
+                hint: "widen the region or the box, or use smaller particles".into(),
+            });
         };
     }
     Ok(out)

@@ -11,6 +11,8 @@
 //! sampled exactly by rejection from the joint placement on the union of the
 //! regions, and refused with a clear error when that is hopeless.
 
+use super::refusal::{Blame, Refusal};
+use super::slots::{Group, singles};
 use super::space::Slot;
 use rand::RngExt;
 use rand::seq::SliceRandom;
@@ -25,13 +27,81 @@ pub fn place(
     names: &[String],
     rng: &mut ChaCha8Rng,
 ) -> Result<Vec<[f64; 1]>, String> {
+    let groups = singles(slots);
+    room(&groups, obstacle).map_err(|r| r.to_string())?;
     let mut out = vec![[0.0]; slots.len()];
-    for cluster in clusters(slots) {
-        let (lo, hi) = hull(slots, &cluster);
+    for cluster in clusters(&groups) {
+        let span = Span::of(&groups, &cluster, obstacle);
+        let x = match span.segment {
+            Some((from, to)) => line_up(slots, &cluster, from, to, rng),
+            None => by_rejection(slots, &cluster, (span.lo, span.hi), obstacle, rng),
+        }
+        .ok_or_else(|| tangled(slots, &cluster, obstacle, span.shared, names))?;
+        for (&i, xi) in cluster.iter().zip(x) {
+            out[i] = [xi];
+        }
+    }
+    Ok(out)
+}
+
+/// Refuses rods that cannot fit where they must go: each set of rods whose
+/// regions overlap needs their total length on the line they share, less
+/// what the piston takes of it. The checks ask it species by species, the
+/// placement rod by rod; both add the lengths in the same order.
+pub fn room(groups: &[Group<1>], obstacle: Option<[f64; 2]>) -> Result<(), Refusal> {
+    for cluster in clusters(groups) {
+        let span = Span::of(groups, &cluster, obstacle);
+        let (from, to) = span.segment.unwrap_or((span.lo, span.hi));
+        let taken = match (span.segment, span.blocked) {
+            (None, Some([a, b])) => b.min(span.hi) - a.max(span.lo),
+            _ => 0.0,
+        };
+        let mut n = 0;
+        let mut w = 0.0;
+        for &i in &cluster {
+            n += groups[i].count;
+            for _ in 0..groups[i].count {
+                w += 2.0 * groups[i].slot.radius;
+            }
+        }
+        if w > to - from - taken {
+            return Err(Refusal {
+                species: groups[cluster[0]].slot.species as usize,
+                blame: Blame::Count,
+                message: format!(
+                    "rods of total length {w} do not fit in their region of length {}{}",
+                    to - from - taken,
+                    if span.blocked.is_some() {
+                        " beside the piston"
+                    } else {
+                        ""
+                    }
+                ),
+                hint: format!(
+                    "{n} rods need a length of {w}: use fewer or shorter rods, or a longer box or region"
+                ),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// A set of overlapping regions: the line they cover, the piston if it is in
+/// the way, and the one free segment they share, if they share one.
+struct Span {
+    lo: f64,
+    hi: f64,
+    blocked: Option<[f64; 2]>,
+    shared: bool,
+    segment: Option<(f64, f64)>,
+}
+
+impl Span {
+    fn of(groups: &[Group<1>], members: &[usize], obstacle: Option<[f64; 2]>) -> Span {
+        let (lo, hi) = hull(groups, members);
         let blocked = obstacle.filter(|&[a, b]| a < hi && b > lo);
-        let shared = cluster
-            .iter()
-            .all(|&i| slots[i].same_region(&slots[cluster[0]]));
+        let first = &groups[members[0]].slot;
+        let shared = members.iter().all(|&i| groups[i].slot.same_region(first));
         // An obstacle that only trims an end of a shared region leaves one segment.
         let segment = match blocked {
             _ if !shared => None,
@@ -40,42 +110,25 @@ pub fn place(
             Some([a, b]) if b >= hi => Some((lo, a)),
             Some(_) => None,
         };
-        let (n, w) = totals(slots, &cluster);
-        let (from, to) = segment.unwrap_or((lo, hi));
-        let taken = match (segment, blocked) {
-            (None, Some([a, b])) => b.min(hi) - a.max(lo),
-            _ => 0.0,
-        };
-        if w > to - from - taken {
-            return Err(format!(
-                "{n} rods of total length {w} do not fit in [{from}, {to}]{}; use fewer or shorter rods or a longer box",
-                if blocked.is_some() {
-                    " beside the piston"
-                } else {
-                    ""
-                }
-            ));
-        }
-        let x = match segment {
-            Some((from, to)) => line_up(slots, &cluster, from, to, rng),
-            None => by_rejection(slots, &cluster, (lo, hi), obstacle, rng),
-        }
-        .ok_or_else(|| tangled(slots, &cluster, obstacle, shared, names))?;
-        for (&i, xi) in cluster.iter().zip(x) {
-            out[i] = [xi];
+        Span {
+            lo,
+            hi,
+            blocked,
+            shared,
+            segment,
         }
     }
-    Ok(out)
 }
 
-/// Sets of rods whose regions overlap, directly or through others.
-fn clusters(slots: &[Slot<1>]) -> Vec<Vec<usize>> {
-    let mut order: Vec<usize> = (0..slots.len()).collect();
-    order.sort_by(|&a, &b| slots[a].lo[0].total_cmp(&slots[b].lo[0]).then(a.cmp(&b)));
+/// Sets of groups whose regions overlap, directly or through others.
+fn clusters(groups: &[Group<1>]) -> Vec<Vec<usize>> {
+    let slot = |i: usize| &groups[i].slot;
+    let mut order: Vec<usize> = (0..groups.len()).collect();
+    order.sort_by(|&a, &b| slot(a).lo[0].total_cmp(&slot(b).lo[0]).then(a.cmp(&b)));
     let mut out: Vec<Vec<usize>> = Vec::new();
     let mut reach = f64::NEG_INFINITY;
     for i in order {
-        let s = &slots[i];
+        let s = slot(i);
         match out.last_mut() {
             Some(c) if s.lo[0] < reach => {
                 c.push(i);
@@ -93,11 +146,11 @@ fn clusters(slots: &[Slot<1>]) -> Vec<Vec<usize>> {
     out
 }
 
-fn hull(slots: &[Slot<1>], members: &[usize]) -> (f64, f64) {
+fn hull(groups: &[Group<1>], members: &[usize]) -> (f64, f64) {
     members
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &i| {
-            (a.min(slots[i].lo[0]), b.max(slots[i].hi[0]))
+            (a.min(groups[i].slot.lo[0]), b.max(groups[i].slot.hi[0]))
         })
 }
 

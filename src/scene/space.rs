@@ -43,6 +43,21 @@ impl<const D: usize> Space<D> {
         })
     }
 
+    /// A position brought into the box along its periodic axes, as the
+    /// engine folds it (so that placing and checking see where it will be).
+    pub fn fold(&self, mut x: [f64; D]) -> [f64; D] {
+        for k in 0..D {
+            if self.periodic[k] {
+                let l = self.size[k];
+                x[k] = x[k].rem_euclid(l);
+                if x[k] >= l {
+                    x[k] = 0.0;
+                }
+            }
+        }
+        x
+    }
+
     pub fn volume(&self) -> f64 {
         self.size.iter().product()
     }

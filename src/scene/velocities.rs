@@ -1,6 +1,7 @@
 //! Initial velocities: Maxwellian, uniform momenta, all equal, or explicit;
 //! optionally with zero total momentum and the gas rescaled to an exact
-//! energy. Immovable particles (inverse mass 0) stay at rest.
+//! energy. Immovable particles (inverse mass 0) stay at rest. The rule's
+//! values are checked in `check`.
 
 use crate::engine::thermal::gaussian;
 use crate::model::scene::Velocities;
@@ -13,7 +14,6 @@ pub fn draw<const D: usize>(
     inv_mass: &[f64],
     rng: &mut ChaCha8Rng,
 ) -> Result<Vec<[f64; D]>, String> {
-    check(spec)?;
     if let Velocities::Explicit { velocities } = spec {
         if velocities.len() != inv_mass.len() {
             return Err(format!(
@@ -51,33 +51,6 @@ pub fn one<const D: usize>(
         Velocities::Equal { velocity } => vector::<D>(velocity, "velocities.velocity")?,
         Velocities::Explicit { .. } => [0.0; D],
     })
-}
-
-fn check(spec: &Velocities) -> Result<(), String> {
-    let positive = |key: &str, x: f64| {
-        if x.is_finite() && x > 0.0 {
-            Ok(())
-        } else {
-            Err(format!(
-                "velocities.{key} must be a positive number, got {x}"
-            ))
-        }
-    };
-    match spec {
-        Velocities::Maxwell {
-            temperature,
-            energy,
-            ..
-        } => {
-            positive("temperature", *temperature)?;
-            energy.map_or(Ok(()), |e| positive("energy", e))
-        }
-        Velocities::Uniform { p, energy, .. } => {
-            positive("p", *p)?;
-            energy.map_or(Ok(()), |e| positive("energy", e))
-        }
-        _ => Ok(()),
-    }
 }
 
 /// (zero_momentum, energy) of the rule.

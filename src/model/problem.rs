@@ -1,0 +1,52 @@
+//! A problem with a request, named by its key path so that the descriptor can
+//! point at it in the file and the scene builder can say which key is at
+//! fault: what is wrong, and what would be right.
+
+use std::fmt;
+
+/// One problem: the key it concerns, what is wrong, what would be right.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Problem {
+    pub key: String,
+    pub message: String,
+    pub hint: Option<String>,
+}
+
+pub type Check = Result<(), Problem>;
+
+/// Shown where there is no file to point into (a run's error):
+/// `` `key`: message; hint ``.
+impl fmt::Display for Problem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "`{}`: {}", self.key, self.message)?;
+        if let Some(hint) = &self.hint {
+            write!(f, "; {hint}")?;
+        }
+        Ok(())
+    }
+}
+
+pub fn bad(key: impl Into<String>, message: impl Into<String>, hint: Option<&str>) -> Check {
+    Err(Problem {
+        key: key.into(),
+        message: message.into(),
+        hint: hint.map(str::to_string),
+    })
+}
+
+pub fn positive(key: &str, v: f64) -> Check {
+    if v.is_finite() && v > 0.0 {
+        Ok(())
+    } else {
+        bad(key, format!("must be a positive number, got {v}"), None)
+    }
+}
+
+/// Radii may be 0: point particles (an ideal gas, or MacKay's point rods).
+pub fn non_negative(key: &str, v: f64) -> Check {
+    if v.is_finite() && v >= 0.0 {
+        Ok(())
+    } else {
+        bad(key, format!("must be a number >= 0, got {v}"), None)
+    }
+}
