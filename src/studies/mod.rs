@@ -5,6 +5,7 @@
 
 pub mod options;
 pub mod piston;
+pub mod pressure;
 
 use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
@@ -16,7 +17,7 @@ use crate::scene::Built;
 pub use options::StudyOption;
 
 /// Every study bonkers knows: one line each.
-pub const REGISTRY: &[&dyn Study] = &[&piston::Piston];
+pub const REGISTRY: &[&dyn Study] = &[&piston::Piston, &pressure::Pressure];
 
 /// A finished run as a study sees it: its descriptor, the scene as built
 /// (in its dimension) and what the run measured.

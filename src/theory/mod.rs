@@ -1,6 +1,11 @@
 //! Theory predictions, one file each, set beside measurements in the summary.
 
+pub mod carnahan_starling;
+pub mod disk_virial;
+pub mod henderson;
+pub mod kolafa_labik_malijevsky;
 pub mod piston;
 pub mod piston_equilibrium;
 pub mod piston_exchange;
 pub mod piston_room;
+pub mod tonks;
