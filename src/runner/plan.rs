@@ -6,6 +6,7 @@ use crate::descriptor::errors::DescriptorError;
 use crate::descriptor::load::{Loaded, apply_overrides, from_table, show};
 use crate::descriptor::sweep::{HARD_LIMIT, count, points};
 use crate::descriptor::validate;
+use crate::model::descriptor::Descriptor;
 use crate::model::run_spec::RunSpec;
 use crate::runner::seeds::{point_key, run_seed};
 use std::collections::HashMap;
@@ -50,18 +51,7 @@ pub fn plan(loaded: &Loaded) -> Result<Vec<RunSpec>, DescriptorError> {
             .key("sweep.parameters");
             hint.into_iter().fold(err, DescriptorError::hint)
         };
-        let mut table = loaded.table.clone();
-        for (key, value) in &params {
-            apply_overrides(&mut table, key, value.clone())
-                .map_err(|m| fail(format!("`{key}`: {m}"), None))?;
-        }
-        let descriptor = from_table(&loaded.file, &table).map_err(|e| {
-            let mut err = fail(e.message, None);
-            err.hints = e.hints;
-            err
-        })?;
-        validate::point(&descriptor)
-            .map_err(|p| fail(format!("`{}`: {}", p.key, p.message), p.hint))?;
+        let descriptor = point_descriptor(loaded, &loaded.table, &params, &fail)?;
         let key = point_key(&params);
         if let Some(other) = seen.insert(key, point_id) {
             return Err(fail(
@@ -104,18 +94,12 @@ fn cases(loaded: &Loaded, specs: &mut Vec<RunSpec>) -> Result<(), DescriptorErro
             hint.into_iter().fold(err, DescriptorError::hint)
         };
         validate::case(d, i).map_err(|p| fail(format!("`{}`: {}", p.key, p.message), p.hint))?;
-        let mut table = base.clone();
-        for (key, value) in &case.set {
-            apply_overrides(&mut table, key, value.clone())
-                .map_err(|m| fail(format!("`{key}`: {m}"), None))?;
-        }
-        let descriptor = from_table(&loaded.file, &table).map_err(|e| {
-            let mut err = fail(e.message, None);
-            err.hints = e.hints;
-            err
-        })?;
-        validate::point(&descriptor)
-            .map_err(|p| fail(format!("`{}`: {}", p.key, p.message), p.hint))?;
+        let settings: Vec<(String, toml::Value)> = case
+            .set
+            .iter()
+            .map(|(k, v)| (k.clone(), v.clone()))
+            .collect();
+        let descriptor = point_descriptor(loaded, &base, &settings, &fail)?;
         let point_id = specs.last().map_or(0, |s| s.point_id + 1);
         let key = point_key(&[("case".to_string(), toml::Value::String(case.name.clone()))]);
         for replica in 0..case.replicas.unwrap_or(d.study.replicas) {
@@ -131,6 +115,30 @@ fn cases(loaded: &Loaded, specs: &mut Vec<RunSpec>) -> Result<(), DescriptorErro
         }
     }
     Ok(())
+}
+
+/// The descriptor of one point: `base` with `settings` (key path, value)
+/// applied, typed and checked as it will run; problems go through `fail`,
+/// which says which point they belong to.
+fn point_descriptor(
+    loaded: &Loaded,
+    base: &toml::Table,
+    settings: &[(String, toml::Value)],
+    fail: &dyn Fn(String, Option<String>) -> DescriptorError,
+) -> Result<Descriptor, DescriptorError> {
+    let mut table = base.clone();
+    for (key, value) in settings {
+        apply_overrides(&mut table, key, value.clone())
+            .map_err(|m| fail(format!("`{key}`: {m}"), None))?;
+    }
+    let descriptor = from_table(&loaded.file, &table).map_err(|e| {
+        let mut err = fail(e.message, None);
+        err.hints = e.hints;
+        err
+    })?;
+    validate::point(&descriptor)
+        .map_err(|p| fail(format!("`{}`: {}", p.key, p.message), p.hint))?;
+    Ok(descriptor)
 }
 
 /// "`scene.piston.mass` = 10.0, `run.duration` = 5.0".
