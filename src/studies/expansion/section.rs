@@ -256,8 +256,8 @@ regime a point is in.\n\n";
 const METHODS: &str = "\n### How each number is measured\n\n\
 **Relaxation time** (`relaxation_time`): per run, the first time the excess f − ½ of the left fraction falls \
 to 1/e of its value at the first sample (½), interpolated linearly between the samples around the crossing. \
-A first passage rather than an exponential fit: the collisionless decay is Gaussian in time, the diffusive \
-one exponential only late, and the first passage measures both the same way; it needs no fit window and the \
+A first passage rather than an exponential fit: the collisionless decay is Gaussian in time, a fluid's \
+undershoots ½ and sloshes, and the first passage measures both the same way; it needs no fit window and the \
 theory gives it exactly. Its cost: the fraction fluctuates by about 1/(2√N) in each run, which can bring a \
 crossing forward in small systems; `τ of the mean curve` is the same first passage of the ensemble mean, \
 whose noise is smaller by √runs. `relaxation_time_free` is the first passage of the collisionless curve \
