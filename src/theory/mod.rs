@@ -2,6 +2,7 @@
 
 pub mod carnahan_starling;
 pub mod disk_virial;
+pub mod expansion;
 pub mod henderson;
 pub mod kolafa_labik_malijevsky;
 pub mod piston;

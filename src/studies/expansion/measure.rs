@@ -1,0 +1,190 @@
+//! What one run of an expansion says: when its left fraction relaxed, where
+//! it settled and how much it fluctuates there; and the collisionless
+//! prediction for the scene it started from.
+
+use crate::model::descriptor::Descriptor;
+use crate::model::scene::Velocities;
+use crate::scene::Built;
+use crate::theory::expansion::{FreeExpansion, Mixture, compressibility};
+use rand::SeedableRng;
+
+/// Part of the run, at its end, over which the settled split is averaged.
+pub const LATE: f64 = 0.5;
+
+/// First time the excess f - 1/2 falls to 1/e of its value at the first
+/// sample, interpolated linearly between the samples around the crossing
+/// (NaN if it never does, or if nothing started in excess).
+pub fn relaxation_time(t: &[f64], f: &[f64]) -> f64 {
+    let Some(&first) = f.first() else {
+        return f64::NAN;
+    };
+    let start = first - 0.5;
+    if start.is_nan() || start <= 0.0 {
+        return f64::NAN;
+    }
+    let level = start / std::f64::consts::E;
+    for i in 1..f.len().min(t.len()) {
+        let (a, b) = (f[i - 1] - 0.5, f[i] - 0.5);
+        if b <= level {
+            let w = (a - level) / (a - b);
+            return t[i - 1] + w * (t[i] - t[i - 1]);
+        }
+    }
+    f64::NAN
+}
+
+/// Mean of f over the last `LATE` of the run, and its mean square
+/// deviation from 1/2 (the mean by symmetry: a run's own mean would hide
+/// its slowest fluctuations).
+pub fn late(t: &[f64], f: &[f64]) -> (f64, f64) {
+    let (Some(&t0), Some(&t1)) = (t.first(), t.last()) else {
+        return (f64::NAN, f64::NAN);
+    };
+    let from = t1 - LATE * (t1 - t0);
+    let v: Vec<f64> = t
+        .iter()
+        .zip(f)
+        .filter(|(t, _)| **t >= from)
+        .map(|(_, f)| *f)
+        .collect();
+    let n = v.len() as f64;
+    let mean = v.iter().sum::<f64>() / n;
+    let var = v.iter().map(|x| (x - 0.5).powi(2)).sum::<f64>() / n;
+    (mean, var)
+}
+
+/// The scene as the theory sees it: its particles' kinds (radius, mass,
+/// count), the box along x and its number density.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Gas {
+    pub dimension: usize,
+    pub length: f64,
+    pub particles: usize,
+    pub density: f64,
+    /// Mean diameter.
+    pub diameter: f64,
+    /// Volume the particles fill over the box's.
+    pub packing: f64,
+    pub kinds: Vec<(f64, f64, usize)>,
+}
+
+impl Gas {
+    pub fn of<const D: usize>(built: &Built<D>) -> Gas {
+        let mut kinds: Vec<(f64, f64, usize)> = Vec::new();
+        let moving = built
+            .particles
+            .iter()
+            .filter(|p| !p.is_immovable() && !p.is_plane());
+        for p in moving {
+            let m = p.mass();
+            match kinds.iter_mut().find(|k| k.0 == p.radius && k.1 == m) {
+                Some(k) => k.2 += 1,
+                None => kinds.push((p.radius, m, 1)),
+            }
+        }
+        let n: usize = kinds.iter().map(|k| k.2).sum();
+        let diameter = kinds.iter().map(|k| 2.0 * k.0 * k.2 as f64).sum::<f64>() / n as f64;
+        let ball = |r: f64| match D {
+            1 => 2.0 * r,
+            2 => std::f64::consts::PI * r * r,
+            _ => 4.0 / 3.0 * std::f64::consts::PI * r.powi(3),
+        };
+        let filled: f64 = kinds.iter().map(|k| ball(k.0) * k.2 as f64).sum();
+        Gas {
+            dimension: D,
+            packing: filled / built.sim_box.volume(),
+            length: built.sim_box.size[0],
+            particles: n,
+            density: n as f64 / built.sim_box.volume(),
+            diameter,
+            kinds,
+        }
+    }
+
+    /// The scene a descriptor gives (built from seed 0: counts and the box
+    /// do not depend on the draws, radii and masses drawn from ranges do).
+    pub fn of_descriptor(d: &Descriptor) -> Option<Gas> {
+        fn at<const D: usize>(d: &Descriptor) -> Option<Gas> {
+            let scene = crate::scene::resolve(&d.scene).ok()?;
+            let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0);
+            Some(Gas::of(&crate::scene::build::<D>(&scene, &mut rng).ok()?))
+        }
+        match crate::scene::resolve(&d.scene).ok()?.dimension().ok()? {
+            1 => at::<1>(d),
+            2 => at::<2>(d),
+            3 => at::<3>(d),
+            _ => None,
+        }
+    }
+
+    /// Mean free path over the box length along x at the final (whole box)
+    /// density, dilute kinetic theory: lambda = 1/(2 sqrt2 n d) for disks,
+    /// 1/(sqrt2 pi n d^2) for spheres; infinite for points. Rods have none
+    /// (they never pass each other): NaN.
+    pub fn knudsen(&self) -> f64 {
+        let (n, d) = (self.density, self.diameter);
+        let path = match self.dimension {
+            2 => 1.0 / (2.0 * 2f64.sqrt() * n * d),
+            3 => 1.0 / (2f64.sqrt() * std::f64::consts::PI * n * d * d),
+            _ => f64::NAN,
+        };
+        path / self.length
+    }
+
+    /// Variance of the late split over the binomial's: S(0).
+    pub fn compressibility(&self) -> f64 {
+        compressibility(self.dimension, self.packing)
+    }
+
+    /// The collisionless prediction at temperature `kt`.
+    pub fn free(&self, kt: f64) -> Mixture {
+        Mixture {
+            kinds: self
+                .kinds
+                .iter()
+                .map(|&(r, m, c)| (FreeExpansion::new(self.length, r, m, kt), c as f64))
+                .collect(),
+        }
+    }
+}
+
+/// kT of a Maxwellian start (the default when the scene gives none); None
+/// for other velocity rules, for which the theory here does not hold.
+pub fn temperature(d: &Descriptor) -> Option<f64> {
+    let scene = crate::scene::resolve(&d.scene).ok()?;
+    match scene.velocities {
+        None => Some(1.0),
+        Some(Velocities::Maxwell {
+            temperature,
+            energy: None,
+            ..
+        }) => Some(temperature),
+        Some(_) => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn crossing_is_interpolated() {
+        let t = [0.0, 1.0, 2.0, 3.0];
+        let f = [1.0, 0.8, 0.6, 0.55];
+        let level = 0.5 / std::f64::consts::E;
+        let expect = 1.0 + (0.3 - level) / 0.2;
+        assert!((relaxation_time(&t, &f) - expect).abs() < 1e-12);
+        assert!(relaxation_time(&t, &[1.0, 0.9, 0.8, 0.75]).is_nan());
+    }
+
+    #[test]
+    fn late_half_statistics() {
+        let t = [0.0, 1.0, 2.0, 3.0, 4.0];
+        let f = [1.0, 0.9, 0.4, 0.6, 0.5];
+        let (m, v) = late(&t, &f);
+        assert!((m - 0.5).abs() < 1e-12);
+        assert!((v - 0.02 / 3.0).abs() < 1e-12);
+        let (_, v) = late(&t, &[0.0, 0.0, 0.4, 0.4, 0.7]);
+        assert!((v - 0.06 / 3.0).abs() < 1e-12);
+    }
+}
