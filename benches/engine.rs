@@ -35,7 +35,7 @@ use bonkers::engine::{
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
 use rand::RngExt;
 
-#[path = "../tests/common/mod.rs"]
+#[path = "../tests/suite/common.rs"]
 mod common;
 
 // ---------------------------------------------------------------------------

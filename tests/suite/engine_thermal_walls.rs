@@ -1,7 +1,7 @@
 //! Thermal walls: the emission law (KS tests against the flux-weighted
 //! Maxwellian), and a gas between them reaching the wall temperature.
 
-mod common;
+use crate::common;
 
 use bonkers::engine::thermal::emit;
 use bonkers::engine::{Axis, Disks, Observer, Particle, SimBox, Simulation, Snapshot, Stop, Wall};

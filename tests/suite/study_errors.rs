@@ -2,11 +2,9 @@
 //! descriptor and expects the message to give the file:line:col of the key
 //! at fault, the key, what is wrong and (where one is close) what is right.
 
-mod study_common;
-
+use crate::study_common::PISTON;
 use bonkers::descriptor::load::parse;
 use bonkers::runner::plan::plan;
-use study_common::PISTON;
 
 /// One edit of PISTON and what its error must say.
 struct Case {

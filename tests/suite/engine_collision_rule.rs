@@ -1,7 +1,7 @@
 //! The collision rule on its own: conservation, the special cases, and the 1D
 //! map as a reflection (MacKay's follow-up question).
 
-mod common;
+use crate::common;
 
 use bonkers::engine::collide::{bounce, contact_time};
 use rand::RngExt;

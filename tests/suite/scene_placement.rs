@@ -3,14 +3,12 @@
 //! every particle inside its walls. Each seeded statistical test compares a
 //! p-value with `P_MIN` (a true law fails one run in ten thousand).
 
-mod scene_stats;
-
+use crate::scene_stats::{P_MIN, chi_square_p, ks_p};
 use bonkers::engine::{Disks, Rods, Spheres};
 use bonkers::model::scene::SceneSpec;
 use bonkers::scene::{Built, build, resolve};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use scene_stats::{P_MIN, chi_square_p, ks_p};
 
 fn built<const D: usize>(text: &str, seed: u64) -> Result<Built<D>, String> {
     let spec: SceneSpec = toml::from_str(text).expect("scene TOML");

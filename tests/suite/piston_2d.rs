@@ -3,14 +3,12 @@
 //! of the ensemble, each with a check that the ensemble can tell the
 //! predictions apart.
 
-mod piston_common;
-
-use bonkers::stats::summary::Stats;
-use bonkers::theory::piston_equilibrium::degrees_of_freedom;
-use piston_common::{
+use crate::piston_common::{
     assert_equipartition, assert_not_one, assert_one, ensemble, geometry, measure_with, result,
     scalar, stats,
 };
+use bonkers::stats::summary::Stats;
+use bonkers::theory::piston_equilibrium::degrees_of_freedom;
 
 /// The preset with its piston and, optionally, other disks.
 fn descriptor(

@@ -1,13 +1,11 @@
 //! Plan expansion: sweep modes, ranges, replicas, run ids and seeds.
 
-mod study_common;
-
+use crate::study_common::PISTON;
 use bonkers::descriptor::load::{apply_overrides, parse};
 use bonkers::descriptor::sweep::{count, expand_values};
 use bonkers::runner::plan::plan;
 use bonkers::runner::seeds::run_seed;
 use std::collections::HashSet;
-use study_common::PISTON;
 
 fn with_sweep(sweep: &str) -> String {
     let head = PISTON.split("[sweep]").next().unwrap();

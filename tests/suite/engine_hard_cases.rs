@@ -2,7 +2,7 @@
 //! extreme masses, grazing and tied events, dense packings, long runs, huge
 //! boxes, and round-off overlaps.
 
-mod common;
+use crate::common;
 
 use bonkers::engine::{Disks, NeighbourList, Particle, Rods, SimBox, Simulation, Spheres, Stop};
 

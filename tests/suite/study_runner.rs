@@ -1,8 +1,7 @@
 //! Running studies with a fake simulator: determinism across thread counts,
 //! resume after interruption, --fresh, failures, and the Parquet tables.
 
-mod study_common;
-
+use crate::study_common::{Interrupting, PISTON, assert_same, fake, tables, write_descriptor};
 use bonkers::descriptor::errors::StudyError;
 use bonkers::descriptor::load::parse;
 use bonkers::runner::pipeline::{StudyOptions, run_study};
@@ -12,7 +11,6 @@ use bonkers::runner::run::run_file;
 use bonkers::runner::store::read_parquet;
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-use study_common::{Interrupting, PISTON, assert_same, fake, tables, write_descriptor};
 
 /// A simulator that counts its calls.
 struct Counting(AtomicUsize);

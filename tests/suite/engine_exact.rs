@@ -1,6 +1,6 @@
 //! Exact results: what hard-particle dynamics must give with no statistics at all.
 
-mod common;
+use crate::common;
 
 use bonkers::engine::{NeighbourList, Snapshot};
 use bonkers::engine::{Observer, Particle, Rods, SimBox, Simulation, Stop, WallHit};

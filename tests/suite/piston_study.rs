@@ -1,14 +1,12 @@
 //! Statistical regression tests of the piston study (seeded; thresholds are
 //! four standard errors of the ensemble, never tuned to one outcome).
 
-mod piston_common;
-
+use crate::piston_common::{
+    assert_equipartition, ensemble, geometry, measure_with, result, scalar, stats,
+};
 use bonkers::model::run_output::RunOutput;
 use bonkers::model::run_spec::RunSpec;
 use bonkers::stats::summary::Stats;
-use piston_common::{
-    assert_equipartition, ensemble, geometry, measure_with, result, scalar, stats,
-};
 
 fn descriptor(mass: f64, duration: f64, replicas: u32, equilibrate: f64) -> String {
     format!(

@@ -1,13 +1,11 @@
 //! Descriptor errors: each path names file:line:col, what is wrong and what
 //! would be right; and no input makes the parser panic.
 
-mod study_common;
-
+use crate::study_common::PISTON;
 use bonkers::descriptor::load::{
     apply_overrides, edit_distance, parse, quick, with_overrides, with_replicas,
 };
 use proptest::prelude::*;
-use study_common::PISTON;
 
 /// The error text for `text` as a user sees it.
 fn error(text: &str) -> String {

@@ -3,7 +3,7 @@
 //! lists at all) makes, in the same order at the same times; and a plane
 //! (the piston wall of 2D/3D scenes) obeys the laws it should.
 
-mod common;
+use crate::common;
 
 use bonkers::engine::{
     Image, NeighbourList, Neighbourhood, Observer, PLANE, PairCollision, Particle, SimBox,

@@ -3,7 +3,7 @@
 //! count what it did, conserve energy to round-off and feed its observer the
 //! events and samples the trait's contract promises, in time order.
 
-mod common;
+use crate::common;
 
 use bonkers::engine::{
     Chain, Dynamics, NeighbourList, Neighbourhood, Observer, PairCollision, Particle, SimBox,

@@ -1,9 +1,7 @@
 //! The `study` binary: exit codes and what users see on stderr.
 
-mod study_common;
-
+use crate::study_common::{PISTON, write_descriptor};
 use std::process::Command;
-use study_common::{PISTON, write_descriptor};
 
 fn study(args: &[&str]) -> (i32, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_study"))

@@ -1,7 +1,7 @@
 //! Save and continue: a run saved halfway, dropped, loaded and continued is
 //! bit-identical to one never interrupted; broken files fail with clear errors.
 
-mod common;
+use crate::common;
 
 use bonkers::engine::{
     Axis, Chain, Counts, Disks, FORMAT_VERSION, NeighbourList, Observer, PairCollision, Particle,

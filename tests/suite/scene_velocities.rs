@@ -2,13 +2,11 @@
 //! radii drawn from a range, and the piston as a particle (its energy in
 //! units of kT, its default velocity, and zero total momentum with it).
 
-mod scene_stats;
-
+use crate::scene_stats::{P_MIN, ks_p, normal_cdf};
 use bonkers::model::scene::SceneSpec;
 use bonkers::scene::{Built, build, resolve};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use scene_stats::{P_MIN, ks_p, normal_cdf};
 
 fn built<const D: usize>(text: &str, seed: u64) -> Result<Built<D>, String> {
     let spec: SceneSpec = toml::from_str(text).expect("scene TOML");

@@ -3,8 +3,7 @@
 //! missing runs, lists failed ones, and a plan run in parts adds up to one
 //! whole run.
 
-mod study_common;
-
+use crate::study_common::{PISTON, assert_same, fake, tables, write_descriptor};
 use bonkers::descriptor::errors::StudyError;
 use bonkers::descriptor::load::parse;
 use bonkers::model::run_output::RunOutput;
@@ -17,7 +16,6 @@ use bonkers::runner::run::{Subset, run_file};
 use std::path::Path;
 use std::process::Command;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-use study_common::{PISTON, assert_same, fake, tables, write_descriptor};
 
 fn run_options(out: &Path) -> StudyOptions {
     StudyOptions {

@@ -1,13 +1,11 @@
 //! The seeds' own claims, tested on their bundled scenes with seeded runs.
 
-mod scene_stats;
-
+use crate::scene_stats::{P_MIN, block_mean, ks_p};
 use bonkers::engine::{Disks, Observer, Rods, Snapshot, Stop};
 use bonkers::model::scene::SceneSpec;
 use bonkers::scene::{Built, build, resolve};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use scene_stats::{P_MIN, block_mean, ks_p};
 
 fn built<const D: usize>(text: &str, seed: u64) -> Built<D> {
     let spec: SceneSpec = toml::from_str(text).expect("scene TOML");
