@@ -7,8 +7,8 @@
 use std::path::Path;
 
 const STYLE: &str = "body{font-family:system-ui,sans-serif;max-width:72rem;margin:2rem auto;\
-padding:0 1rem;color:#222;line-height:1.45}\
-table{border-collapse:collapse;margin:1rem 0;font-size:.9rem}\
+padding:0 1rem;color:#222;line-height:1.45;overflow-wrap:break-word}\
+.scroll{overflow-x:auto}table{border-collapse:collapse;margin:1rem 0;font-size:.9rem}\
 th,td{border:1px solid #ccc;padding:.25rem .5rem}th{background:#f2f2f2}\
 tr:nth-child(even) td{background:#fafafa}td.num,th.num{text-align:right}\
 code{background:#f4f4f4;padding:0 .2rem;border-radius:3px}\
@@ -175,7 +175,8 @@ fn table(rows: &[&str]) -> String {
             ""
         }
     };
-    let mut html = String::from("<table>\n");
+    // A wide table scrolls inside its own box; the page never scrolls sideways.
+    let mut html = String::from("<div class=\"scroll\"><table>\n");
     if let Some(head) = head {
         html.push_str("<thead><tr>");
         for (i, c) in head.iter().enumerate() {
@@ -191,7 +192,7 @@ fn table(rows: &[&str]) -> String {
         }
         html.push_str("</tr>\n");
     }
-    html.push_str("</tbody>\n</table>\n");
+    html.push_str("</tbody>\n</table></div>\n");
     html
 }
 
