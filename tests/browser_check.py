@@ -5,7 +5,8 @@
 For each OUT/index.html, at a 1280 px wide window: no console errors or
 uncaught exceptions, no network request (the report is self-contained), nothing
 wider than the window (the page never scrolls sideways), every figure drawn
-(each <figure> holds an SVG with a non-empty box and marks in it). A screenshot of the top of each report goes
+(each <figure> holds an SVG with a non-empty box and marks in it), and
+every movie playing, its time slider seeking it. A screenshot of the top of each report goes
 to SCREENSHOT_DIR/<name of OUT>.png for a person to look at.
 
 Talks the DevTools protocol over a pipe (`--remote-debugging-pipe`: JSON
@@ -27,7 +28,7 @@ WIDTH, HEIGHT = 1280, 900
 LOCAL = ("file:", "data:", "about:")
 
 # Runs in the page once it has loaded; returns what the checks need.
-PROBE = """(() => {
+PROBE = """(async () => {
   const width = window.innerWidth;
   const wide = [...document.querySelectorAll('body *')]
     .filter(e => e.getBoundingClientRect().right > width + 0.5)
@@ -45,11 +46,27 @@ PROBE = """(() => {
     if (marks < 3) return {caption, problem: 'only ' + marks + ' marks'};
     return {caption, problem: null};
   });
+  // Movies: the animation clock runs, and the slider under each seeks it.
+  const movies = [...document.querySelectorAll('svg.movie')];
+  const before = movies.map(m => m.getCurrentTime());
+  await new Promise(done => setTimeout(done, 500));
+  const films = movies.map((m, i) => {
+    if (!(m.getCurrentTime() > before[i])) return 'movie ' + (i + 1) + ' does not play';
+    const slider = m.parentElement.querySelector('.player input[type=range]');
+    if (!slider) return 'movie ' + (i + 1) + ' has no time slider';
+    slider.value = slider.max / 2;
+    slider.dispatchEvent(new Event('input'));
+    if (!m.animationsPaused() || Math.abs(m.getCurrentTime() - slider.max / 2) > 1e-3)
+      return 'movie ' + (i + 1) + ': the slider does not seek';
+    return null;
+  });
   return {
     scrollWidth: document.documentElement.scrollWidth,
     width,
     wide,
     figures,
+    movies: movies.length,
+    films: films.filter(f => f),
   };
 })()"""
 
@@ -142,7 +159,8 @@ def check(browser, page, screenshot):
     browser.events.clear()
     browser.send("Page.navigate", {"url": "file://" + os.path.abspath(page)}, session=session)
     browser.wait_for("Page.loadEventFired", session)
-    probe = browser.send("Runtime.evaluate", {"expression": PROBE, "returnByValue": True},
+    probe = browser.send("Runtime.evaluate",
+                         {"expression": PROBE, "returnByValue": True, "awaitPromise": True},
                          session=session)["result"]["value"]
     shot = browser.send("Page.captureScreenshot", {"format": "png"}, session=session)
     with open(screenshot, "wb") as f:
@@ -167,11 +185,12 @@ def check(browser, page, screenshot):
                         + "; ".join(probe["wide"]))
     if not probe["figures"]:
         problems.append("no figures")
+    problems += probe["films"]
     for figure in probe["figures"]:
         if figure["problem"]:
             problems.append(f"figure '{figure['caption'][:60]}': {figure['problem']}")
     browser.send("Target.closeTarget", {"targetId": target})
-    return problems, len(probe["figures"])
+    return problems, len(probe["figures"]), probe["movies"]
 
 
 def main():
@@ -185,15 +204,15 @@ def main():
         for out in outs:
             page = os.path.join(out, "index.html")
             screenshot = os.path.join(shots, os.path.basename(os.path.normpath(out)) + ".png")
-            problems, figures = check(browser, page, screenshot)
+            problems, figures, movies = check(browser, page, screenshot)
             if problems:
                 failed = True
                 print(f"{page}: {len(problems)} problem(s)")
                 for p in problems:
                     print("  " + p)
             else:
-                print(f"{page}: ok at {WIDTH} px, {figures} figures drawn, no errors, "
-                      f"no network; screenshot {screenshot}")
+                print(f"{page}: ok at {WIDTH} px, {figures} figures drawn, {movies} movie(s) "
+                      f"playing and seeking, no errors, no network; screenshot {screenshot}")
     finally:
         browser.close()
     sys.exit(1 if failed else 0)

@@ -5,6 +5,7 @@
 use crate::descriptor::load::closest;
 use crate::descriptor::validate::{Check, bad};
 use crate::model::descriptor::Descriptor;
+use crate::model::movie::MovieSpec;
 use crate::model::need::Need;
 use crate::model::scene::{Boundary, SceneSpec};
 use crate::observe::{CATALOGUE, Kind, catalogue};
@@ -33,6 +34,47 @@ pub fn observe(d: &Descriptor, scene: &SceneSpec) -> Check {
                 positions_fit(d, scene, &key)?;
             }
         }
+    }
+    if let Some(movie) = &o.movie {
+        movie_fits(movie, scene)?;
+    }
+    Ok(())
+}
+
+/// Most frames a movie has, and most particle positions in all its frames
+/// (each is a number in the SVG, a few bytes; this keeps the file under
+/// about 10 MB).
+const MAX_FRAMES: usize = 2000;
+const MAX_MOVIE_POSITIONS: f64 = 1e6;
+
+fn movie_fits(movie: &MovieSpec, scene: &SceneSpec) -> Check {
+    if !(movie.duration.is_finite() && movie.duration > 0.0) {
+        return bad(
+            "observe.movie.duration",
+            format!("{} is not a simulated time to film", movie.duration),
+            Some("a number > 0, e.g. duration = 20.0"),
+        );
+    }
+    if !(2..=MAX_FRAMES).contains(&movie.frames) {
+        return bad(
+            "observe.movie.frames",
+            format!("{} frames", movie.frames),
+            Some(&format!(
+                "a whole number from 2 to {MAX_FRAMES}, e.g. frames = 200"
+            )),
+        );
+    }
+    let positions =
+        movie.frames as f64 * crate::descriptor::validate_scene::particles(scene) as f64;
+    if positions > MAX_MOVIE_POSITIONS {
+        return bad(
+            "observe.movie.frames",
+            format!(
+                "the movie would hold {positions:.1e} particle positions (every particle in every \
+                 frame); at most {MAX_MOVIE_POSITIONS:.0e} keep its file small enough to open"
+            ),
+            Some("fewer frames, or film a scene with fewer particles"),
+        );
     }
     Ok(())
 }

@@ -140,4 +140,7 @@ pub struct ObserveSection {
     /// Scalar observables (time averages), e.g. "wall_pressure".
     #[serde(default)]
     pub scalars: Vec<String>,
+    /// A movie of the plan's first run, embedded in the report.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub movie: Option<super::movie::MovieSpec>,
 }

@@ -5,6 +5,7 @@
 
 pub mod catalogue;
 mod entry;
+pub mod film;
 mod histogram;
 mod sampled;
 mod set;

@@ -14,16 +14,54 @@ tr:nth-child(even) td{background:#fafafa}td.num,th.num{text-align:right}\
 code{background:#f4f4f4;padding:0 .2rem;border-radius:3px}\
 pre{background:#f4f4f4;padding:.6rem;overflow-x:auto}\
 figure{margin:1.2rem 0}figure svg{max-width:100%;height:auto}\
-figcaption{color:#555;font-size:.9rem}h1,h2{border-bottom:1px solid #ddd}";
+figcaption{color:#555;font-size:.9rem}\
+.player{display:flex;gap:.6rem;align-items:center;max-width:720px}.player input{flex:1}h1,h2{border-bottom:1px solid #ddd}";
+
+/// Under each movie (an animated SVG of class `movie`): a pause button, a
+/// time slider and the simulated time. Only pages with a movie carry it.
+const PLAYER: &str = "<script>\n\
+document.querySelectorAll('svg.movie').forEach(svg => {\n\
+  const T = +svg.dataset.duration, P = +svg.dataset.playback;\n\
+  const bar = document.createElement('div');\n\
+  const play = document.createElement('button');\n\
+  const slider = document.createElement('input');\n\
+  const label = document.createElement('span');\n\
+  bar.className = 'player';\n\
+  play.textContent = 'Pause';\n\
+  Object.assign(slider, {type: 'range', min: 0, max: P, step: 'any', value: 0});\n\
+  slider.setAttribute('aria-label', 'time');\n\
+  bar.append(play, slider, label);\n\
+  svg.after(bar);\n\
+  const show = () => {\n\
+    const t = svg.getCurrentTime() % P;\n\
+    slider.value = t;\n\
+    label.textContent = 't = ' + (t / P * T).toFixed(2);\n\
+  };\n\
+  const pause = () => { svg.pauseAnimations(); play.textContent = 'Play'; };\n\
+  play.onclick = () => {\n\
+    if (!svg.animationsPaused()) return pause();\n\
+    svg.unpauseAnimations();\n\
+    play.textContent = 'Pause';\n\
+  };\n\
+  slider.oninput = () => { pause(); svg.setCurrentTime(+slider.value); show(); };\n\
+  const tick = () => { if (!svg.animationsPaused()) show(); requestAnimationFrame(tick); };\n\
+  tick();\n\
+});\n\
+</script>\n";
 
 /// The whole page for `markdown`; figures are read from `out_dir`.
 pub fn page(title: &str, markdown: &str, out_dir: &Path) -> String {
+    let body = body(markdown, out_dir);
+    let player = if body.contains("<svg class=\"movie\"") {
+        PLAYER
+    } else {
+        ""
+    };
     format!(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
-         <title>{}</title>\n<style>{STYLE}</style>\n</head>\n<body>\n{}</body>\n</html>\n",
+         <title>{}</title>\n<style>{STYLE}</style>\n</head>\n<body>\n{body}{player}</body>\n</html>\n",
         escape(title),
-        body(markdown, out_dir)
     )
 }
 

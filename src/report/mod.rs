@@ -7,6 +7,7 @@ pub mod chart;
 pub mod html;
 pub mod labels;
 pub mod markdown;
+pub mod movie;
 mod plot_hist;
 mod plot_scalars;
 mod plot_series;

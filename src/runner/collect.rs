@@ -14,6 +14,9 @@
 
 use crate::descriptor::errors::StudyError;
 use crate::descriptor::load::{self, Loaded};
+use crate::files::write_atomic;
+use crate::model::movie::MovieSpec;
+use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::model::summary::SummaryRow;
@@ -255,7 +258,10 @@ pub fn collect(
         .filter(|(_, r)| r.ok())
         .map(|(s, r)| (s, r.output))
         .collect();
-    let sections = crate::studies::sections(&loaded.descriptor, &succeeded)?;
+    let mut sections = crate::studies::sections(&loaded.descriptor, &succeeded)?;
+    if let Some(movie) = &loaded.descriptor.observe.movie {
+        sections.extend(film_run(&succeeded, movie, staging.dir())?);
+    }
     let resumed = planned.saturating_sub(invocation.ran);
     let meta = ReportMeta {
         command: invocation.command_line.join(" "),
@@ -344,6 +350,34 @@ fn write_manifest(
     let json = manifest.to_json().context("cannot encode manifest.json")?;
     crate::files::write_atomic(&staging.dir().join(publish::MANIFEST), json.as_bytes())
 }
+
+/// `[observe] movie`: the run it names (or the first that succeeded),
+/// filmed again from its start and written as `movie.svg`, with the section
+/// that shows it.
+fn film_run(
+    runs: &[(RunSpec, RunOutput)],
+    movie: &MovieSpec,
+    dir: &Path,
+) -> anyhow::Result<Option<ReportSection>> {
+    let named = runs.iter().find(|(s, _)| s.run_id == movie.run);
+    let Some((spec, _)) = named.or_else(|| runs.iter().min_by_key(|(s, _)| s.run_id)) else {
+        return Ok(None);
+    };
+    let film = super::movie::film(spec, movie)
+        .with_context(|| format!("filming run {} for the movie", spec.run_id))?;
+    write_atomic(
+        &dir.join(MOVIE_FILE),
+        crate::report::movie::svg(&film).as_bytes(),
+    )?;
+    Ok(Some(ReportSection {
+        title: "Movie".into(),
+        markdown: crate::report::movie::section(&film, MOVIE_FILE),
+        figures: Vec::new(),
+        presents: Vec::new(),
+    }))
+}
+
+const MOVIE_FILE: &str = "movie.svg";
 
 #[cfg(test)]
 mod tests {

@@ -6,6 +6,7 @@ pub mod cpu_time;
 pub mod estimate;
 pub mod lock;
 pub mod manifest;
+pub mod movie;
 pub mod pipeline;
 pub mod plan;
 pub mod progress;

@@ -4,7 +4,7 @@
 //! which integrator moves the particles is decided by the factory the
 //! dimension picks (`rods` or `balls`), and nowhere else.
 
-use crate::engine::{Chain, Dynamics, NeighbourList, Neighbourhood, Simulation, Stop};
+use crate::engine::{Chain, Dynamics, NeighbourList, Neighbourhood, Observer, Simulation, Stop};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::observe::{self, Context, ObserverSet};
@@ -20,8 +20,8 @@ pub fn run(spec: &RunSpec) -> anyhow::Result<RunOutput> {
     let scene = scene::resolve(&spec.descriptor.scene).map_err(|e| anyhow!(e))?;
     match scene.dimension().map_err(|e| anyhow!(e))? {
         1 => simulate::<1>(spec, &scene, rods),
-        2 => simulate::<2>(spec, &scene, balls::<2>),
-        3 => simulate::<3>(spec, &scene, balls::<3>),
+        2 => simulate::<2>(spec, &scene, balls::<2, _>),
+        3 => simulate::<3>(spec, &scene, balls::<3, _>),
         d => bail!("scene.dimension = {d}; use 1, 2 or 3"),
     }
 }
@@ -35,37 +35,48 @@ type Factory<const D: usize> =
     fn(&scene::Built<D>, ObserverSet<D>, u64) -> anyhow::Result<Engine<D>>;
 
 /// Rods: the event-driven engine with a chain of neighbours.
-fn rods(
+pub(super) fn rods<O: Observer<1> + 'static>(
     built: &scene::Built<1>,
-    observers: ObserverSet<1>,
+    observers: O,
     seed: u64,
-) -> anyhow::Result<Engine<1>> {
-    event_driven::<1, Chain>(built, observers, seed)
+) -> anyhow::Result<Box<dyn Dynamics<1, O>>> {
+    event_driven::<1, Chain, O>(built, observers, seed)
 }
 
 /// Disks and spheres: the event-driven engine with neighbour lists, with
 /// plane support only for scenes with a piston wall (others pay nothing for it).
-fn balls<const D: usize>(
+pub(super) fn balls<const D: usize, O: Observer<D> + 'static>(
     built: &scene::Built<D>,
-    observers: ObserverSet<D>,
+    observers: O,
     seed: u64,
-) -> anyhow::Result<Engine<D>> {
+) -> anyhow::Result<Box<dyn Dynamics<D, O>>> {
     if built.particles.iter().any(|p| p.is_plane()) {
-        event_driven::<D, NeighbourList<D, true>>(built, observers, seed)
+        event_driven::<D, NeighbourList<D, true>, O>(built, observers, seed)
     } else {
-        event_driven::<D, NeighbourList<D>>(built, observers, seed)
+        event_driven::<D, NeighbourList<D>, O>(built, observers, seed)
     }
 }
 
-fn event_driven<const D: usize, N: Neighbourhood<D> + 'static>(
+fn event_driven<const D: usize, N: Neighbourhood<D> + 'static, O: Observer<D> + 'static>(
     built: &scene::Built<D>,
-    observers: ObserverSet<D>,
+    observers: O,
     seed: u64,
-) -> anyhow::Result<Engine<D>> {
-    let sim: Simulation<D, N, ObserverSet<D>> =
+) -> anyhow::Result<Box<dyn Dynamics<D, O>>> {
+    let sim: Simulation<D, N, O> =
         Simulation::new(built.particles.clone(), built.sim_box, observers, seed)
             .context("the scene cannot be simulated")?;
     Ok(Box::new(sim))
+}
+
+/// The run's start: its scene drawn from the run's own stream, then the seed
+/// of the engine's thermal walls drawn from the same stream.
+pub(super) fn start<const D: usize>(
+    spec: &RunSpec,
+    scene: &crate::model::scene::SceneSpec,
+) -> anyhow::Result<(scene::Built<D>, u64)> {
+    let mut rng = ChaCha8Rng::seed_from_u64(spec.seed);
+    let built = scene::build::<D>(scene, &mut rng).map_err(|e| anyhow!("scene: {e}"))?;
+    Ok((built, rand::RngExt::random::<u64>(&mut rng)))
 }
 
 fn simulate<const D: usize>(
@@ -74,10 +85,7 @@ fn simulate<const D: usize>(
     factory: Factory<D>,
 ) -> anyhow::Result<RunOutput> {
     let started = Instant::now();
-    // One stream per run: the scene draws from it first, then the engine's
-    // thermal walls get a seed drawn from it.
-    let mut rng = ChaCha8Rng::seed_from_u64(spec.seed);
-    let built = scene::build::<D>(scene, &mut rng).map_err(|e| anyhow!("scene: {e}"))?;
+    let (built, engine_seed) = start::<D>(spec, scene)?;
     let d = &spec.descriptor;
     let mut series = d.observe.series.clone();
     for name in studies::series(d) {
@@ -92,7 +100,6 @@ fn simulate<const D: usize>(
         built.piston,
     )
     .map_err(|e| anyhow!("observe: {e}"))?;
-    let engine_seed = rand::RngExt::random::<u64>(&mut rng);
     let mut sim = factory(&built, observers, engine_seed)?;
 
     let equilibrate = d.run.equilibrate;

@@ -12,6 +12,7 @@ mod engine_save;
 mod engine_thermal_walls;
 mod expansion_study;
 mod layers;
+mod movie;
 mod parquet_schema;
 mod piston_2d;
 mod piston_common;

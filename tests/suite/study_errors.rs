@@ -472,6 +472,28 @@ fn observables_and_analyses() {
             &["s.toml:39:12: `observe.scalars.0`: `wall_pressure` needs walls"],
         ),
         case(
+            "a movie of one frame",
+            edit(
+                "series = [\"piston_position\"]\n",
+                "series = [\"piston_position\"]\nmovie = { duration = 20.0, frames = 1 }\n",
+            ),
+            &[
+                "s.toml:41:28: `observe.movie.frames`: 1 frames",
+                "a whole number from 2 to 2000",
+            ],
+        ),
+        case(
+            "a movie of no time",
+            edit(
+                "series = [\"piston_position\"]\n",
+                "series = [\"piston_position\"]\nmovie = { duration = -1.0, frames = 10 }\n",
+            ),
+            &[
+                "s.toml:41:11: `observe.movie.duration`: -1 is not a simulated time to film",
+                "a number > 0",
+            ],
+        ),
+        case(
             "wall heat without thermal walls",
             edit("scalars = [\"wall_pressure\"]", "scalars = [\"wall_heat\"]"),
             &[
