@@ -66,8 +66,8 @@ struct RunArgs {
     /// Output directory (default: reports/<study name>/).
     #[arg(long)]
     out: Option<PathBuf>,
-    /// Worker threads (default: all cores).
-    #[arg(long, value_parser = clap::value_parser!(u64).range(1..))]
+    /// Worker threads (default: all cores; never more than the runs to do).
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_THREADS))]
     threads: Option<u64>,
     /// Discard runs saved by an earlier, interrupted invocation instead of resuming.
     #[arg(long)]
@@ -87,6 +87,9 @@ struct CollectArgs {
 }
 
 /// Set by Ctrl-C: no new runs start.
+/// More worker threads than any machine has cores: a typo, refused by clap.
+const MAX_THREADS: u64 = 4096;
+
 static STOP: AtomicBool = AtomicBool::new(false);
 
 /// Run the command line `args` (program name first); returns the exit code.

@@ -9,6 +9,7 @@ use crate::descriptor::errors::DescriptorError;
 use crate::descriptor::explain::{explain, toml_error};
 use crate::model::descriptor::Descriptor;
 use serde::Deserialize;
+use std::io::Read;
 use std::path::Path;
 
 pub use crate::descriptor::explain::{closest, edit_distance};
@@ -42,12 +43,38 @@ impl Loaded {
 /// Read and parse the descriptor at `path`.
 pub fn load(path: &Path) -> Result<Loaded, DescriptorError> {
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| {
-        DescriptorError::new(&file, format!("cannot read the descriptor: {e}"))
+    let unreadable = |what: String| {
+        DescriptorError::new(&file, what)
             .hint("give the path of a study descriptor, e.g. `studies/piston.toml`; `study list` shows the bundled ones")
-    })?;
+    };
+    let meta = std::fs::metadata(path)
+        .map_err(|e| unreadable(format!("cannot read the descriptor: {e}")))?;
+    // A device or a pipe would be read forever; a huge file is not a descriptor.
+    if !meta.is_file() {
+        return Err(unreadable(
+            "is not a regular file (a folder, device or pipe); a descriptor is a TOML file".into(),
+        ));
+    }
+    if meta.len() > MAX_DESCRIPTOR_BYTES {
+        return Err(unreadable(format!(
+            "is {} bytes; a descriptor is at most {MAX_DESCRIPTOR_BYTES} (sweep with ranges, not long lists)",
+            meta.len()
+        )));
+    }
+    let mut text = String::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_DESCRIPTOR_BYTES + 1).read_to_string(&mut text))
+        .map_err(|e| unreadable(format!("cannot read the descriptor: {e}")))?;
+    if text.len() as u64 > MAX_DESCRIPTOR_BYTES {
+        return Err(unreadable(format!(
+            "grew past {MAX_DESCRIPTOR_BYTES} bytes while being read"
+        )));
+    }
     parse(&file, &text)
 }
+
+/// Largest descriptor read (explicit positions of many particles fit).
+pub const MAX_DESCRIPTOR_BYTES: u64 = 16 << 20;
 
 /// Parse and validate descriptor `text`; `file` names it in messages.
 pub fn parse(file: &str, text: &str) -> Result<Loaded, DescriptorError> {

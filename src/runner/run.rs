@@ -192,6 +192,8 @@ pub fn run_subset(
     let threads = options
         .threads
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+        // An idle thread costs a stack and does nothing.
+        .min(todo.len())
         .max(1);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)

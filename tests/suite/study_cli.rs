@@ -167,3 +167,48 @@ fn resuming_says_what_it_reuses_reruns_and_removes() {
     );
     assert!(err.contains("(18 run now, 0 resumed, 0 failed)"), "{err}");
 }
+
+/// What is not a descriptor file is refused at once with exit 2: a device
+/// or a pipe would otherwise be read forever, a huge file into memory.
+#[test]
+fn devices_pipes_folders_and_huge_files_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("fifo.toml");
+    let made = Command::new("mkfifo").arg(&fifo).status().unwrap();
+    assert!(made.success());
+    let huge = dir.path().join("huge.toml");
+    let file = std::fs::File::create(&huge).unwrap();
+    file.set_len(bonkers::descriptor::load::MAX_DESCRIPTOR_BYTES + 1)
+        .unwrap();
+    for (path, says) in [
+        ("/dev/zero", "is not a regular file"),
+        (fifo.to_str().unwrap(), "is not a regular file"),
+        (dir.path().to_str().unwrap(), "is not a regular file"),
+        (
+            huge.to_str().unwrap(),
+            "is 16777217 bytes; a descriptor is at most 16777216",
+        ),
+    ] {
+        let (code, _, err) = study(&["validate", path]);
+        assert_eq!(code, 2, "{path}: {err}");
+        assert!(err.contains(&format!("error: {path}: {says}")), "{err}");
+    }
+}
+
+#[test]
+fn absurd_thread_counts_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = write_descriptor(dir.path(), PISTON);
+    let out = dir.path().join("out");
+    let (code, _, err) = study(&[
+        "run",
+        file.to_str().unwrap(),
+        "--threads",
+        "100000",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("100000 is not in 1..=4096"), "{err}");
+    assert!(!out.exists(), "nothing written");
+}
