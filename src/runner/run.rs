@@ -34,6 +34,10 @@ pub struct RunnerOptions {
     /// collect that follows need not parse their files again (seconds for a
     /// large study); off, the runner holds no run's outputs after saving it.
     pub keep: bool,
+    /// Other invocations (shards) may be writing into the same runs folder:
+    /// remove nothing of theirs, neither their temporary files nor records
+    /// of runs this plan does not have.
+    pub shared: bool,
 }
 
 /// Which runs of a plan one call computes.
@@ -158,7 +162,11 @@ pub fn run_subset(
         discard(specs, &picked, out_dir)?;
     }
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    let mut tidied = tidy(specs, out_dir)?;
+    let mut tidied = if options.shared {
+        Tidied::default()
+    } else {
+        tidy(specs, out_dir)?
+    };
 
     // Each saved record is read once, to learn whether it can be reused.
     let mut records: Vec<Option<RunRecord>> = Vec::new();
