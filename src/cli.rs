@@ -95,6 +95,19 @@ struct RunArgs {
     /// records, no tables; `study collect OUT` makes them.
     #[arg(long, value_name = "IDS", value_parser = parse_runs)]
     runs: Option<RunIds>,
+    /// Save each unfinished run's state this often (wall seconds; 0: never),
+    /// so a killed or timed-out run continues where it was when run again.
+    #[arg(long, value_name = "SECONDS", default_value_t = 300.0, value_parser = parse_seconds)]
+    checkpoint_every: f64,
+}
+
+fn parse_seconds(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(s) if s.is_finite() && s >= 0.0 => Ok(s),
+        _ => Err(format!(
+            "`{text}` is not a number of seconds >= 0 (0: no checkpoints)"
+        )),
+    }
 }
 
 /// The ids `--runs` takes.
@@ -206,6 +219,7 @@ fn run(
             .iter()
             .map(|s| s.to_string_lossy().into_owned())
             .collect(),
+        checkpoint_every: Some(std::time::Duration::from_secs_f64(a.checkpoint_every)),
     };
     let slice = match (a.shard, a.runs) {
         (Some(shard), _) => Some(Slice::Shard(shard)),
@@ -217,6 +231,12 @@ fn run(
     }
     let outcome = pipeline::run_study(&a.plan.file, &options, simulate, &STOP)?;
     if !a.quiet {
+        if outcome.continued > 0 {
+            eprintln!(
+                "study: {} run(s) continued from their checkpoints",
+                outcome.continued
+            );
+        }
         eprintln!(
             "study: {} runs ({} run now, {} resumed, {} failed) -> {}",
             outcome.planned,
@@ -252,6 +272,12 @@ fn run_slice(
         .out
         .clone()
         .unwrap_or_else(|| PathBuf::from("<its --out>"));
+    if options.progress != ProgressMode::Quiet && report.continued > 0 {
+        eprintln!(
+            "study: {what}: {} run(s) continued from their checkpoints",
+            report.continued
+        );
+    }
     if options.progress != ProgressMode::Quiet || report.failed > 0 {
         eprintln!(
             "study: {what}: {} runs ({} run now, {} resumed, {} failed) -> {}; `study collect {}` makes the tables once every part is done",

@@ -29,6 +29,7 @@ fn run_options(out: &Path) -> StudyOptions {
         progress: ProgressMode::Quiet,
         yes: false,
         command_line: vec!["study".into(), "run".into()],
+        checkpoint_every: None,
     }
 }
 

@@ -118,6 +118,7 @@ fn options(out: &Path) -> StudyOptions {
         progress: ProgressMode::Quiet,
         yes: false,
         command_line: vec!["study".into(), "run".into()],
+        checkpoint_every: None,
     }
 }
 

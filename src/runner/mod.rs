@@ -1,6 +1,7 @@
 //! `study run`: descriptor -> plan -> parallel runs -> run records, then
 //! `collect`: run records -> tables -> report.
 
+pub mod checkpoint;
 pub mod collect;
 pub mod cpu_time;
 pub mod estimate;

@@ -6,6 +6,7 @@ use crate::descriptor::errors::{DescriptorError, StudyError};
 use crate::descriptor::load::{self, Loaded};
 use crate::descriptor::sweep::{self, CONFIRM_ABOVE};
 use crate::model::run_spec::RunSpec;
+use crate::runner::checkpoint;
 use crate::runner::collect::{self, Collected, Invocation, RunCommand};
 use crate::runner::lock::OutLock;
 use crate::runner::origin::{self, Origin};
@@ -17,7 +18,7 @@ use crate::runner::shard::{self, Shard};
 use anyhow::Context;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
-use std::time::{Instant, SystemTime};
+use std::time::{Duration, Instant, SystemTime};
 
 /// Options of `study run` (and what `study validate` shares).
 #[derive(Debug, Clone)]
@@ -33,6 +34,9 @@ pub struct StudyOptions {
     pub yes: bool,
     /// Recorded in the manifest.
     pub command_line: Vec<String>,
+    /// Wall time between checkpoints of a run (`checkpoint.rs`); None: the
+    /// default, five minutes; zero: no checkpoints.
+    pub checkpoint_every: Option<Duration>,
 }
 
 /// Options of `study collect`: those that find the plan and its folder.
@@ -55,6 +59,8 @@ pub struct StudyOutcome {
     pub ran: usize,
     pub failed: usize,
     pub resumed: usize,
+    /// Run now from a checkpoint an earlier invocation saved.
+    pub continued: usize,
 }
 
 /// Load the descriptor and apply `--quick` and `--replicas`, in that order.
@@ -230,6 +236,11 @@ fn compute(
         progress: options.progress,
         keep,
         shared: matches!(subset, Subset::Matching(_) | Subset::Ids(_)),
+        checkpoint_every: match options.checkpoint_every {
+            None => Some(checkpoint::DEFAULT_EVERY),
+            Some(every) if every.is_zero() => None,
+            every => every,
+        },
     };
     origin::save(&planned.out_dir, &planned.origin)?;
     let clock = Instant::now();
@@ -292,6 +303,7 @@ pub fn run_study(
         ran: report.ran,
         failed: report.failed,
         resumed: report.resumed,
+        continued: report.continued,
     })
 }
 
