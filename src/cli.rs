@@ -147,6 +147,10 @@ struct SlurmArgs {
     /// Memory per task, as Slurm writes it (e.g. 4G).
     #[arg(long)]
     mem: Option<String>,
+    /// Save each unfinished run's state this often (wall seconds; 0: never);
+    /// default: `study run`'s, 300.
+    #[arg(long, value_name = "SECONDS", value_parser = parse_seconds)]
+    checkpoint_every: Option<f64>,
     /// Also submit both jobs with sbatch.
     #[arg(long)]
     submit: bool,
@@ -397,7 +401,7 @@ fn slurm_job(a: &SlurmArgs) -> Result<i32, StudyError> {
         partition: a.partition.clone(),
         time: a.time.clone(),
         mem: a.mem.clone(),
-        checkpoint_every: None,
+        checkpoint_every: a.checkpoint_every,
     };
     let (shards_path, collect_path) = job.write()?;
     // So `study status OUT` knows the plan before any task has started.
@@ -439,7 +443,7 @@ fn slurm_summary(
 ) -> String {
     let total: f64 = loads.iter().sum();
     let mut out = format!(
-        "wrote {} (an array of {} shards of the {runs} runs, {} CPUs each) and {}\n",
+        "wrote {} (an array of {} shards of the {runs} runs, {} CPU(s) each) and {}\n",
         shards_path.display(),
         job.shards,
         job.cpus,
@@ -455,7 +459,7 @@ fn slurm_summary(
         for (k, l) in loads.iter().enumerate() {
             let _ = writeln!(
                 out,
-                "  shard {}: ~{} (~{} of wall time on {} CPUs)",
+                "  shard {}: ~{} (~{} of wall time on {} CPU(s))",
                 k + 1,
                 cpu_hours(*l),
                 wall(*l),
@@ -467,7 +471,7 @@ fn slurm_summary(
         let min = loads.iter().copied().fold(f64::INFINITY, f64::min);
         let _ = writeln!(
             out,
-            "  per shard: ~{} to ~{} (the longest ~{} of wall time on {} CPUs)",
+            "  per shard: ~{} to ~{} (the longest ~{} of wall time on {} CPU(s))",
             cpu_hours(min),
             cpu_hours(max),
             wall(max),

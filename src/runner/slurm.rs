@@ -116,7 +116,7 @@ impl SlurmJob {
             "set -eu\n\
              echo \"shard ${{SLURM_ARRAY_TASK_ID}}/{n}: job ${{SLURM_JOB_ID}} on $(hostname), restart ${{SLURM_RESTART_COUNT:-0}}\"\n\
              exec {study} run {file} --out {outq} --shard \"${{SLURM_ARRAY_TASK_ID}}/{n}\" \
-             --threads \"${{SLURM_CPUS_PER_TASK:-1}}\" --quiet{flags}{checkpoint}\n",
+             --threads \"${{SLURM_CPUS_PER_TASK:-1}}\"{flags}{checkpoint}\n",
             n = self.shards,
             study = shell_word(&self.study.to_string_lossy()),
             file = shell_word(&self.file.to_string_lossy()),
