@@ -220,13 +220,22 @@ pub fn shell_word(word: &str) -> String {
     }
 }
 
+/// How the caller holds the output folder.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Claim {
+    /// Alone (exclusive lock); `keep`: hand the records back for a collect.
+    Whole { keep: bool },
+    /// Beside other parts of the plan (shared lock): remove nothing of theirs.
+    Shared,
+}
+
 /// Run the picked runs of the plan into records; Ctrl-C is an error that
 /// says how many runs are kept. Returns the report and its wall time.
 fn compute(
     planned: &Planned,
     subset: Subset<'_>,
     options: &StudyOptions,
-    keep: bool,
+    claim: Claim,
     simulate: &SimulateFn<'_>,
     stop: &AtomicBool,
 ) -> Result<(RunnerReport, f64), StudyError> {
@@ -234,8 +243,8 @@ fn compute(
         threads: options.threads,
         fresh: options.fresh,
         progress: options.progress,
-        keep,
-        shared: matches!(subset, Subset::Matching(_) | Subset::Ids(_)),
+        keep: matches!(claim, Claim::Whole { keep: true }),
+        shared: claim == Claim::Shared,
         checkpoint_every: match options.checkpoint_every {
             None => Some(checkpoint::DEFAULT_EVERY),
             Some(every) if every.is_zero() => None,
@@ -278,8 +287,14 @@ pub fn run_study(
         options.out.as_ref(),
     )?;
     let _lock = claim(&planned.out_dir)?;
-    let (mut report, runs_wall_seconds) =
-        compute(&planned, Subset::All, options, true, simulate, stop)?;
+    let (mut report, runs_wall_seconds) = compute(
+        &planned,
+        Subset::All,
+        options,
+        Claim::Whole { keep: true },
+        simulate,
+        stop,
+    )?;
     let invocation = Invocation {
         command_line: options.command_line.clone(),
         started,
@@ -325,7 +340,8 @@ pub fn run_part(
         options.out.as_ref(),
     )?;
     let _lock = claim(&planned.out_dir)?;
-    Ok(compute(&planned, subset, options, false, simulate, stop)?.0)
+    let claim = Claim::Whole { keep: false };
+    Ok(compute(&planned, subset, options, claim, simulate, stop)?.0)
 }
 
 /// Which part of a plan `run_slice` runs.
@@ -369,9 +385,23 @@ pub fn run_slice(
                 .filter(|&(_, &k)| k == s.index)
                 .map(|(spec, _)| spec.run_id)
                 .collect();
-            compute(&planned, Subset::Ids(&ids), options, false, simulate, stop)?
+            compute(
+                &planned,
+                Subset::Ids(&ids),
+                options,
+                Claim::Shared,
+                simulate,
+                stop,
+            )?
         }
-        Slice::Runs(ids) => compute(&planned, Subset::Ids(ids), options, false, simulate, stop)?,
+        Slice::Runs(ids) => compute(
+            &planned,
+            Subset::Ids(ids),
+            options,
+            Claim::Shared,
+            simulate,
+            stop,
+        )?,
     };
     Ok(report.0)
 }
