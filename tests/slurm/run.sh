@@ -16,7 +16,7 @@
 # KEEP=1 keeps the temporary folder.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-STUDY=$(realpath "${STUDY:-${CARGO_TARGET_DIR:-target}/release/study}")
+STUDY=$(realpath -m "${STUDY:-${CARGO_TARGET_DIR:-target}/release/study}")
 for tool in munged mungekey slurmctld slurmd sbatch squeue scontrol sinfo scancel; do
   command -v "$tool" >/dev/null || { echo "run.sh: $tool is missing (apt-get install slurm-wlm munge)" >&2; exit 2; }
 done
