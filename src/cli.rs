@@ -1,16 +1,20 @@
 //! The `study` command line: parse arguments, dispatch, map outcomes to exit
 //! codes (0 ok, 1 some runs failed, 2 bad input, 130 interrupted).
 
-use crate::descriptor::errors::StudyError;
+use crate::descriptor::errors::{DescriptorError, StudyError};
 use crate::descriptor::load::{Loaded, show};
 use crate::descriptor::sweep;
 use crate::model::run_spec::RunSpec;
 use crate::runner::collect;
 use crate::runner::estimate::{self, RunCost};
-use crate::runner::pipeline::{self, CollectOptions, StudyOptions};
+use crate::runner::origin::Origin;
+use crate::runner::pipeline::{self, CollectOptions, Slice, StudyOptions};
 use crate::runner::plan;
 use crate::runner::progress::{ProgressMode, human_duration};
 use crate::runner::run::SimulateFn;
+use crate::runner::shard::{self, Shard};
+use crate::runner::slurm::{self, SlurmJob};
+use crate::runner::status::{self, cpu_hours};
 use clap::{Args, Parser, Subcommand};
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
@@ -34,10 +38,17 @@ enum Command {
     Run(RunArgs),
     /// Make the tables, plots and report from the saved runs, running nothing.
     ///
-    /// Give it the descriptor and flags of the `study run` that saved the runs,
-    /// so it finds the same plan and output folder. Planned runs with no record
-    /// are listed, with the command that runs them, and nothing is written.
+    /// Give it the output folder (`study collect DIR`: its .study.json says how
+    /// the runs were planned), or the descriptor and flags of the `study run`
+    /// that saved the runs. Planned runs with no record are listed, with the
+    /// command that runs exactly them, and nothing is written.
     Collect(CollectArgs),
+    /// How far the study in an output folder is: runs done, failed and
+    /// pending, CPU-hours spent and left, shards running now.
+    Status(StatusArgs),
+    /// Write Slurm batch scripts that run the study as a job array of shards,
+    /// then collect; print the sbatch commands and the estimated CPU-hours.
+    Slurm(SlurmArgs),
     /// Check a descriptor and print its plan without running anything.
     Validate(PlanArgs),
     /// List the bundled studies, scenes, observables and analyses.
@@ -75,6 +86,74 @@ struct RunArgs {
     /// No progress output.
     #[arg(long)]
     quiet: bool,
+    /// Run only shard K of N (1 <= K <= N) and store its run records, no
+    /// tables: every run is in exactly one shard. Shards may share --out;
+    /// `study collect OUT` makes the tables once all are done.
+    #[arg(long, value_name = "K/N", conflicts_with = "runs")]
+    shard: Option<Shard>,
+    /// Run only these runs (the run_id column, e.g. 3,7-9) and store their
+    /// records, no tables; `study collect OUT` makes them.
+    #[arg(long, value_name = "IDS", value_parser = parse_runs)]
+    runs: Option<RunIds>,
+    /// Save each unfinished run's state this often (wall seconds; 0: never),
+    /// so a killed or timed-out run continues where it was when run again.
+    #[arg(long, value_name = "SECONDS", default_value_t = 300.0, value_parser = parse_seconds)]
+    checkpoint_every: f64,
+}
+
+fn parse_seconds(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(s) if s.is_finite() && s >= 0.0 => Ok(s),
+        _ => Err(format!(
+            "`{text}` is not a number of seconds >= 0 (0: no checkpoints)"
+        )),
+    }
+}
+
+/// The ids `--runs` takes.
+#[derive(Debug, Clone)]
+struct RunIds(Vec<u64>);
+
+fn parse_runs(text: &str) -> Result<RunIds, String> {
+    collect::parse_ranges(text).map(RunIds)
+}
+
+#[derive(Debug, Args)]
+struct StatusArgs {
+    /// The output folder of a study (its --out).
+    dir: PathBuf,
+}
+
+#[derive(Debug, Args)]
+struct SlurmArgs {
+    #[command(flatten)]
+    plan: PlanArgs,
+    /// Output folder the shards share (default: reports/<study name>/); on a
+    /// cluster, a folder on the shared file system.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Array tasks, one shard each.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
+    shards: u32,
+    /// CPUs per task: the threads of each shard.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
+    cpus: u32,
+    /// Slurm partition (default: the cluster's).
+    #[arg(long)]
+    partition: Option<String>,
+    /// Time limit per task, as Slurm writes it (e.g. 2:00:00 or 1-12:00:00).
+    #[arg(long)]
+    time: Option<String>,
+    /// Memory per task, as Slurm writes it (e.g. 4G).
+    #[arg(long)]
+    mem: Option<String>,
+    /// Save each unfinished run's state this often (wall seconds; 0: never);
+    /// default: `study run`'s, 300.
+    #[arg(long, value_name = "SECONDS", value_parser = parse_seconds)]
+    checkpoint_every: Option<f64>,
+    /// Also submit both jobs with sbatch.
+    #[arg(long)]
+    submit: bool,
 }
 
 #[derive(Debug, Args)]
@@ -104,6 +183,8 @@ pub fn main(args: Vec<std::ffi::OsString>, simulate: &SimulateFn<'_>) -> i32 {
     let result = match cli.command {
         Command::Run(a) => run(a, args, simulate),
         Command::Collect(a) => collect(a, args),
+        Command::Status(a) => status_of(&a.dir),
+        Command::Slurm(a) => slurm_job(&a),
         Command::Validate(a) => validate(&a),
         Command::List => list(),
     };
@@ -145,9 +226,24 @@ fn run(
             .iter()
             .map(|s| s.to_string_lossy().into_owned())
             .collect(),
+        checkpoint_every: Some(std::time::Duration::from_secs_f64(a.checkpoint_every)),
     };
+    let slice = match (a.shard, a.runs) {
+        (Some(shard), _) => Some(Slice::Shard(shard)),
+        (None, Some(RunIds(ids))) => Some(Slice::Runs(ids)),
+        (None, None) => None,
+    };
+    if let Some(slice) = slice {
+        return run_slice(&a.plan.file, &options, &slice, simulate);
+    }
     let outcome = pipeline::run_study(&a.plan.file, &options, simulate, &STOP)?;
     if !a.quiet {
+        if outcome.continued > 0 {
+            eprintln!(
+                "study: {} run(s) continued from their checkpoints",
+                outcome.continued
+            );
+        }
         eprintln!(
             "study: {} runs ({} run now, {} resumed, {} failed) -> {}",
             outcome.planned,
@@ -167,7 +263,62 @@ fn run(
     Ok(0)
 }
 
+/// `study run --shard` or `--runs`: records only.
+fn run_slice(
+    file: &Path,
+    options: &StudyOptions,
+    slice: &Slice,
+    simulate: &SimulateFn<'_>,
+) -> Result<i32, StudyError> {
+    let report = pipeline::run_slice(file, options, slice, simulate, &STOP)?;
+    let what = match slice {
+        Slice::Shard(s) => format!("shard {s}"),
+        Slice::Runs(_) => "the runs asked for".to_string(),
+    };
+    let out = options
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("<its --out>"));
+    if options.progress != ProgressMode::Quiet && report.continued > 0 {
+        eprintln!(
+            "study: {what}: {} run(s) continued from their checkpoints",
+            report.continued
+        );
+    }
+    if options.progress != ProgressMode::Quiet || report.failed > 0 {
+        eprintln!(
+            "study: {what}: {} runs ({} run now, {} resumed, {} failed) -> {}; `study collect {}` makes the tables once every part is done",
+            report.picked,
+            report.ran,
+            report.resumed,
+            report.failed,
+            out.display(),
+            pipeline::shell_word(&out.to_string_lossy())
+        );
+    }
+    Ok(if report.failed > 0 { 1 } else { 0 })
+}
+
 fn collect(a: CollectArgs, args: Vec<std::ffi::OsString>) -> Result<i32, StudyError> {
+    let command_line: Vec<String> = args
+        .iter()
+        .map(|s| s.to_string_lossy().into_owned())
+        .collect();
+    if a.plan.file.is_dir() {
+        let dir = a.plan.file.display().to_string();
+        if a.out.is_some() || a.plan.quick || a.plan.replicas.is_some() {
+            return Err(DescriptorError::new(
+                &dir,
+                "is an output folder: --out, --quick and --replicas go with a descriptor",
+            )
+            .hint(format!(
+                "`study collect {dir}` alone collects the plan its .study.json saved"
+            ))
+            .into());
+        }
+        let outcome = pipeline::collect_folder(&a.plan.file, command_line)?;
+        return Ok(collected(&outcome));
+    }
     let options = CollectOptions {
         out: a.out,
         replicas: a.plan.replicas,
@@ -179,10 +330,20 @@ fn collect(a: CollectArgs, args: Vec<std::ffi::OsString>) -> Result<i32, StudyEr
             .collect(),
     };
     let outcome = pipeline::collect_study(&a.plan.file, &options)?;
+    Ok(collected(&outcome))
+}
+
+/// Say what a collect made; the exit code.
+fn collected(outcome: &collect::Collected) -> i32 {
     eprintln!(
         "study: collected {} runs -> {}",
         outcome.planned,
         outcome.out_dir.display()
+    );
+    eprintln!(
+        "study: the runs took {} (the plan estimated {})",
+        cpu_hours(outcome.cpu_seconds),
+        cpu_hours(outcome.estimated_seconds)
     );
     if !outcome.failed.is_empty() {
         eprint!(
@@ -190,17 +351,150 @@ fn collect(a: CollectArgs, args: Vec<std::ffi::OsString>) -> Result<i32, StudyEr
             outcome.failed.len(),
             collect::listing(&outcome.failed)
         );
-        let rerun = pipeline::run_command(
-            &a.plan.file,
-            &outcome.out_dir,
-            a.plan.quick,
-            a.plan.replicas,
-            a.plan.yes,
+        eprintln!(
+            "study: `{}` retries them; then `study collect {}`",
+            outcome.retry,
+            pipeline::shell_word(&outcome.out_dir.to_string_lossy())
         );
-        eprintln!("study: `{rerun}` retries them");
-        return Ok(1);
+        return 1;
+    }
+    0
+}
+
+/// `study status DIR`.
+fn status_of(dir: &Path) -> Result<i32, StudyError> {
+    let (loaded, specs, rerun) = pipeline::folder_plan(dir)?;
+    let status = status::status(&specs, dir);
+    emit(&status.text(&loaded.descriptor.study.name, dir, &rerun));
+    Ok(0)
+}
+
+/// `study slurm`.
+fn slurm_job(a: &SlurmArgs) -> Result<i32, StudyError> {
+    let loaded = pipeline::prepare(&a.plan.file, a.plan.replicas, a.plan.quick)?;
+    pipeline::confirm_size(&loaded, a.plan.yes)?;
+    let specs = plan::plan(&loaded)?;
+    let out = a
+        .out
+        .clone()
+        .unwrap_or_else(|| pipeline::default_out_dir(&loaded, a.plan.quick));
+    let absolute = |p: &Path| std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf());
+    let file = a.plan.file.display().to_string();
+    if let Some(t) = &a.time
+        && slurm::time_limit_seconds(t).is_none()
+    {
+        return Err(
+            DescriptorError::new(&file, format!("--time {t} is not a Slurm time limit"))
+                .hint("write minutes, H:MM:SS or D-HH:MM:SS, e.g. --time 2:00:00")
+                .into(),
+        );
+    }
+    let study = std::env::current_exe()
+        .map_err(|e| StudyError::Other(anyhow::anyhow!("cannot find the study executable: {e}")))?;
+    let job = SlurmJob {
+        study,
+        file: absolute(&a.plan.file),
+        out: absolute(&out),
+        quick: a.plan.quick,
+        replicas: a.plan.replicas,
+        yes: a.plan.yes,
+        name: loaded.descriptor.study.name.clone(),
+        shards: a.shards,
+        cpus: a.cpus,
+        partition: a.partition.clone(),
+        time: a.time.clone(),
+        mem: a.mem.clone(),
+        checkpoint_every: a.checkpoint_every,
+    };
+    let (shards_path, collect_path) = job.write()?;
+    // So `study status OUT` knows the plan before any task has started.
+    let origin = Origin::new(
+        &a.plan.file,
+        &loaded,
+        a.plan.quick,
+        a.plan.replicas,
+        a.plan.yes,
+    );
+    crate::runner::origin::save(&job.out, &origin)?;
+    let seconds = shard::estimated_seconds(&specs);
+    let loads = shard::loads(&seconds, &shard::deal(&seconds, a.shards), a.shards);
+    emit(&slurm_summary(
+        &job,
+        &loads,
+        specs.len(),
+        &shards_path,
+        &collect_path,
+    ));
+    if a.submit {
+        let (array, after) = slurm::submit(&shards_path, &collect_path)?;
+        emit(&format!(
+            "submitted: array job {array} ({} tasks), collect job {after} after it\n  watch it with `squeue -j {array},{after}` and `study status {}`\n",
+            a.shards,
+            pipeline::shell_word(&job.out.to_string_lossy())
+        ));
     }
     Ok(0)
+}
+
+/// What `study slurm` prints: the scripts, the cost, the commands.
+fn slurm_summary(
+    job: &SlurmJob,
+    loads: &[f64],
+    runs: usize,
+    shards_path: &Path,
+    collect_path: &Path,
+) -> String {
+    let total: f64 = loads.iter().sum();
+    let mut out = format!(
+        "wrote {} (an array of {} shards of the {runs} runs, {} CPU(s) each) and {}\n",
+        shards_path.display(),
+        job.shards,
+        job.cpus,
+        collect_path.display()
+    );
+    let _ = writeln!(
+        out,
+        "estimated cost: ~{} in total (the plan's estimate: see `study validate`)",
+        cpu_hours(total)
+    );
+    let wall = |s: f64| human_duration(s / f64::from(job.cpus));
+    if loads.len() <= 16 {
+        for (k, l) in loads.iter().enumerate() {
+            let _ = writeln!(
+                out,
+                "  shard {}: ~{} (~{} of wall time on {} CPU(s))",
+                k + 1,
+                cpu_hours(*l),
+                wall(*l),
+                job.cpus
+            );
+        }
+    } else {
+        let max = loads.iter().copied().fold(0.0, f64::max);
+        let min = loads.iter().copied().fold(f64::INFINITY, f64::min);
+        let _ = writeln!(
+            out,
+            "  per shard: ~{} to ~{} (the longest ~{} of wall time on {} CPU(s))",
+            cpu_hours(min),
+            cpu_hours(max),
+            wall(max),
+            job.cpus
+        );
+    }
+    let longest = loads.iter().copied().fold(0.0, f64::max) / f64::from(job.cpus);
+    if let Some(limit) = job.time.as_deref().and_then(slurm::time_limit_seconds)
+        && longest > limit
+    {
+        let _ = writeln!(
+            out,
+            "  note: the longest shard is estimated at ~{}, more than --time {}: its runs checkpoint, so submitting it again continues them, but more --shards or a longer --time avoids that",
+            human_duration(longest),
+            job.time.as_deref().unwrap_or("")
+        );
+    }
+    let [submit, after] = slurm::submit_commands(shards_path, collect_path);
+    let _ = writeln!(out, "submit with:\n  {submit}\n  {after}");
+    out
 }
 
 fn validate(a: &PlanArgs) -> Result<i32, StudyError> {

@@ -4,7 +4,7 @@
 //! clock (an observer, not a probe of the shared pass), as it always has: the
 //! tables keep their order.
 
-use super::{Context, Entry, Kind, Measure, Observable, Part, Setup};
+use super::{Context, Entry, Kind, Measure, Observable, Part, Setup, StateIn, StateOut};
 use crate::engine::{Observer, Snapshot};
 use crate::model::need::Need;
 use crate::model::run_output::{RunOutput, Series};
@@ -69,5 +69,17 @@ impl<const D: usize> Measure<D> for GasEnergyBySide {
                 value,
             });
         }
+    }
+    fn save(&self, out: &mut StateOut) -> bool {
+        [&self.t, &self.left, &self.right]
+            .into_iter()
+            .for_each(|v| out.list(v));
+        true
+    }
+    fn restore(&mut self, from: &mut StateIn) -> Result<(), String> {
+        self.t = from.list()?;
+        self.left = from.list()?;
+        self.right = from.list()?;
+        Ok(())
     }
 }

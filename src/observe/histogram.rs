@@ -1,7 +1,7 @@
 //! A histogram of one value per particle over every sample, on fixed bins:
 //! what a histogram observable is made of (its file gives the value).
 
-use super::{Context, Measure};
+use super::{Context, Measure, StateIn, StateOut};
 use crate::engine::{Observer, Particle, Snapshot};
 use crate::model::run_output::{Histogram, RunOutput};
 
@@ -58,5 +58,22 @@ impl<const D: usize> Measure<D> for ParticleHistogram<D> {
             hi: (0..bins).map(|b| self.lo + (b + 1) as f64 * w).collect(),
             count: self.counts,
         });
+    }
+    fn save(&self, out: &mut StateOut) -> bool {
+        out.list(&self.counts);
+        true
+    }
+    fn restore(&mut self, from: &mut StateIn) -> Result<(), String> {
+        let counts = from.list()?;
+        if counts.len() != self.counts.len() {
+            return Err(format!(
+                "{} has {} bins, its state {}",
+                self.name,
+                self.counts.len(),
+                counts.len()
+            ));
+        }
+        self.counts = counts;
+        Ok(())
     }
 }

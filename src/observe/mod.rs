@@ -9,6 +9,7 @@ pub mod film;
 mod histogram;
 mod sampled;
 mod set;
+pub mod state;
 #[cfg(test)]
 mod tests;
 
@@ -31,6 +32,7 @@ pub use catalogue::CATALOGUE;
 pub use entry::{Entry, Kind, Observable, Part, Probe, Setup};
 pub use sampled::Row;
 pub use set::ObserverSet;
+pub use state::{StateIn, StateOut};
 
 /// What a measurement needs to know about the run when it reports.
 pub struct Context<'a> {
@@ -58,6 +60,15 @@ pub trait Measure<const D: usize>: Observer<D> + Send {
         false
     }
     fn finish(self: Box<Self>, ctx: &Context, out: &mut RunOutput);
+    /// Append what it has accumulated, for a checkpoint; false if it cannot
+    /// (then its runs are not checkpointed, and start over when stopped).
+    fn save(&self, _out: &mut StateOut) -> bool {
+        false
+    }
+    /// Take on a state `save` wrote, as if it had seen those events.
+    fn restore(&mut self, _from: &mut StateIn) -> Result<(), String> {
+        Err("this observer cannot be restored".into())
+    }
 }
 
 /// Build the observers for the named observables; an unknown name is an

@@ -3,7 +3,7 @@
 //! time axis) or time averages.
 
 use super::entry::Probe;
-use super::{Context, Measure};
+use super::{Context, Measure, StateIn, StateOut};
 use crate::engine::{Observer, Snapshot};
 use crate::model::run_output::{RunOutput, Series};
 
@@ -93,5 +93,21 @@ impl<const D: usize> Measure<D> for Sampled<D> {
                 }
             }
         }
+    }
+    fn save(&self, out: &mut StateOut) -> bool {
+        out.list(&self.t);
+        for r in &self.readings {
+            out.number(r.columns.len() as f64);
+            r.columns.iter().for_each(|c| out.list(c));
+        }
+        true
+    }
+    fn restore(&mut self, from: &mut StateIn) -> Result<(), String> {
+        self.t = from.list()?;
+        for r in &mut self.readings {
+            let n = from.number()? as usize;
+            r.columns = (0..n).map(|_| from.list()).collect::<Result<_, _>>()?;
+        }
+        Ok(())
     }
 }

@@ -2,7 +2,7 @@
 //! only called on the observers that use it, so an observable nobody asked
 //! for costs nothing per event.
 
-use super::{Context, Measure};
+use super::{Context, Measure, StateIn, StateOut};
 use crate::engine::{Observer, PairCollision, Snapshot, WallHit};
 use crate::model::run_output::RunOutput;
 
@@ -30,6 +30,29 @@ impl<const D: usize> ObserverSet<D> {
             measures,
             recording: false,
         }
+    }
+
+    /// Everything the observers accumulated, and whether they record: the
+    /// observers' part of a checkpoint. None if one of them cannot be saved.
+    pub fn save_state(&self) -> Option<Vec<f64>> {
+        let mut out = StateOut::default();
+        out.number(f64::from(u8::from(self.recording)));
+        for m in &self.measures {
+            if !m.save(&mut out) {
+                return None;
+            }
+        }
+        Some(out.0)
+    }
+
+    /// Take on a state `save_state` wrote for the same observers.
+    pub fn restore_state(&mut self, state: &[f64]) -> Result<(), String> {
+        let mut from = StateIn::new(state);
+        self.recording = from.number()? != 0.0;
+        for m in &mut self.measures {
+            m.restore(&mut from)?;
+        }
+        from.done()
     }
 
     pub fn finish(self, ctx: &Context, out: &mut RunOutput) {

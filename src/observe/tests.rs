@@ -322,3 +322,97 @@ fn patterns_match_the_names_they_stand_for() {
     );
     assert_eq!(catalogue::label("scene.piston.mass"), None);
 }
+
+/// The hand-made run's events, `t0` later: a sample, a thermal wall hit, a
+/// pair collision, a sample.
+fn feed<const D: usize>(set: &mut super::ObserverSet<D>, t0: f64) {
+    let (particles, sim_box) = scene::<D>();
+    let snapshot = |time| Snapshot {
+        time,
+        now: 0.0,
+        particles: &particles,
+        sim_box: &sim_box,
+    };
+    set.sample(&snapshot(t0));
+    set.wall_hit(&WallHit {
+        time: t0 + 0.5,
+        i: 0,
+        axis: 0,
+        high: false,
+        impulse: along0(2.0),
+        energy_gain: 0.25,
+    });
+    set.pair_collision(&PairCollision {
+        time: t0 + 0.6,
+        i: 0,
+        j: 2,
+        impulse_i: along0(-1.0),
+        separation: along0(1.0),
+    });
+    set.sample(&snapshot(t0 + 1.0));
+}
+
+fn bits(state: &[f64]) -> Vec<u64> {
+    state.iter().map(|x| x.to_bits()).collect()
+}
+
+/// Checkpoints: every observable saves what it accumulated, and a fresh set
+/// restored from that goes on exactly as the original (same output, bit for
+/// bit); a state of other observers is refused.
+fn restored_sets_go_on_as_the_original<const D: usize>() {
+    let species = SPECIES.map(String::from);
+    let ctx = Context {
+        species: &species,
+        piston: Some(1),
+        duration: 2.0,
+        volume: L.powi(D as i32),
+        wall_area: 2.0 * L.powi(D as i32 - 1) * D as f64,
+        dimension: D,
+        degrees_of_freedom: (3 * D) as f64,
+    };
+    for e in CATALOGUE {
+        let make = || {
+            let names = vec![e.name.to_string()];
+            let none = Vec::new();
+            let pick = |k: Kind| if k == e.kind { &names } else { &none };
+            build::<D>(
+                pick(Kind::Series),
+                pick(Kind::Scalars),
+                pick(Kind::Histograms),
+                Some(1),
+            )
+            .unwrap()
+        };
+        let mut original = make();
+        original.recording = true;
+        feed(&mut original, 0.0);
+        let state = original
+            .save_state()
+            .unwrap_or_else(|| panic!("{D}D: `{}` cannot be checkpointed", e.name));
+        let mut restored = make();
+        restored.restore_state(&state).unwrap();
+        assert!(restored.recording);
+        let again = restored.save_state().unwrap();
+        assert_eq!(bits(&again), bits(&state), "{D}D: `{}`", e.name);
+        feed(&mut original, 1.0);
+        feed(&mut restored, 1.0);
+        let [mut a, mut b] = [RunOutput::default(), RunOutput::default()];
+        original.finish(&ctx, &mut a);
+        restored.finish(&ctx, &mut b);
+        assert_eq!(format!("{a:?}"), format!("{b:?}"), "{D}D: `{}`", e.name);
+    }
+    let mut sampled = build::<D>(&["kinetic_energy".into()], &[], &[], Some(1)).unwrap();
+    sampled.recording = true;
+    feed(&mut sampled, 0.0);
+    let state = sampled.save_state().unwrap();
+    let mut other = build::<D>(&[], &["wall_pressure".into()], &[], Some(1)).unwrap();
+    assert!(other.restore_state(&state).is_err());
+    assert!(other.restore_state(&state[..1]).is_err());
+}
+
+#[test]
+fn observers_restore_from_a_checkpoint_in_1d_2d_3d() {
+    restored_sets_go_on_as_the_original::<1>();
+    restored_sets_go_on_as_the_original::<2>();
+    restored_sets_go_on_as_the_original::<3>();
+}

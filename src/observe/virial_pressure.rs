@@ -1,7 +1,7 @@
 //! Pressure from the collision virial, any boundary:
 //! P V = (2/d) <K> + (1/(d t)) sum over collisions of r_ij . dp_i.
 
-use super::{Context, Entry, Kind, Measure, Observable, Part, Setup};
+use super::{Context, Entry, Kind, Measure, Observable, Part, Setup, StateIn, StateOut};
 use crate::engine::{Observer, PairCollision, Snapshot};
 use crate::model::need::Need;
 use crate::model::run_output::RunOutput;
@@ -58,5 +58,17 @@ impl<const D: usize> Measure<D> for VirialPressure {
         };
         let p = (2.0 * kinetic / d + self.virial / (d * ctx.duration)) / ctx.volume;
         out.scalars.push(("virial_pressure".into(), p));
+    }
+    fn save(&self, out: &mut StateOut) -> bool {
+        out.number(self.virial);
+        out.number(self.kinetic_sum);
+        out.number(self.samples as f64);
+        true
+    }
+    fn restore(&mut self, from: &mut StateIn) -> Result<(), String> {
+        self.virial = from.number()?;
+        self.kinetic_sum = from.number()?;
+        self.samples = from.number()? as u64;
+        Ok(())
     }
 }

@@ -1,7 +1,7 @@
 //! Heat exchanged with thermal walls: the kinetic energy each wall gives the
 //! particles that hit it (negative when the gas heats the wall).
 
-use super::{Context, Entry, Kind, Measure, Observable, Part, Setup};
+use super::{Context, Entry, Kind, Measure, Observable, Part, Setup, StateIn, StateOut};
 use crate::engine::{Observer, WallHit};
 use crate::model::need::Need;
 use crate::model::run_output::RunOutput;
@@ -45,5 +45,21 @@ impl<const D: usize> Measure<D> for WallHeat {
                     .push((format!("heat_in.axis{axis}.{name}"), sides[side]));
             }
         }
+    }
+    fn save(&self, out: &mut StateOut) -> bool {
+        out.list(&self.gain.concat());
+        true
+    }
+    fn restore(&mut self, from: &mut StateIn) -> Result<(), String> {
+        let flat = from.list()?;
+        if flat.len() != 2 * self.gain.len() {
+            return Err(format!(
+                "wall_heat has {} walls, its state {}",
+                2 * self.gain.len(),
+                flat.len()
+            ));
+        }
+        self.gain = flat.chunks(2).map(|c| [c[0], c[1]]).collect();
+        Ok(())
     }
 }

@@ -1,7 +1,7 @@
 //! Pressure from the walls: the momentum the particles give them, per unit
 //! time and wall area.
 
-use super::{Context, Entry, Kind, Measure, Observable, Part, Setup};
+use super::{Context, Entry, Kind, Measure, Observable, Part, Setup, StateIn, StateOut};
 use crate::engine::{Observer, WallHit};
 use crate::model::need::Need;
 use crate::model::run_output::RunOutput;
@@ -43,5 +43,13 @@ impl<const D: usize> Measure<D> for WallPressure {
             "wall_pressure".into(),
             self.impulse / (ctx.duration * ctx.wall_area),
         ));
+    }
+    fn save(&self, out: &mut StateOut) -> bool {
+        out.number(self.impulse);
+        true
+    }
+    fn restore(&mut self, from: &mut StateIn) -> Result<(), String> {
+        self.impulse = from.number()?;
+        Ok(())
     }
 }

@@ -45,7 +45,32 @@ pub struct Invocation {
     pub runs_wall_seconds: f64,
     pub ran: usize,
     /// The command that runs what is missing, shown when something is.
-    pub rerun: String,
+    pub rerun: RunCommand,
+}
+
+/// The `study run` that makes a plan's runs into its folder, as words:
+/// `head` is `study run FILE --out DIR`, `tail` the flags that set the plan
+/// (`--quick`, `--replicas`, `--yes`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunCommand {
+    pub head: String,
+    pub tail: String,
+    /// The output folder as typed, for the `study collect` that follows a part.
+    pub out: String,
+}
+
+impl RunCommand {
+    /// Runs (or resumes) the whole plan, then collects.
+    pub fn whole(&self) -> String {
+        format!("{}{}", self.head, self.tail)
+    }
+
+    /// Runs exactly the runs `ids` (ascending), records only: a
+    /// `study collect` of `out` follows.
+    pub fn for_runs(&self, ids: &[u64]) -> String {
+        let ranges = id_ranges(ids).replace(' ', "");
+        format!("{} --runs {ranges}{}", self.head, self.tail)
+    }
 }
 
 /// A planned run that has no usable record, or whose record says it failed.
@@ -102,6 +127,11 @@ pub struct MissingRuns {
     pub missing: Vec<Unfinished>,
     /// The command that runs them (and keeps the runs already saved).
     pub rerun: String,
+    /// The command that runs exactly them and nothing else (beside shards
+    /// still running, say), when some runs do have records; then
+    /// `study collect` of `collect` makes the tables.
+    pub exact: Option<String>,
+    pub collect: String,
 }
 
 impl fmt::Display for MissingRuns {
@@ -114,7 +144,15 @@ impl fmt::Display for MissingRuns {
             self.out_dir.display()
         )?;
         f.write_str(&listing(&self.missing))?;
-        write!(f, "  hint: run them with `{}`", self.rerun)
+        write!(f, "  hint: run them with `{}`", self.rerun)?;
+        if let Some(exact) = &self.exact {
+            write!(
+                f,
+                "\n  hint: or exactly them, records only (e.g. while shards still run): `{exact}`, then `study collect {}`",
+                self.collect
+            )?;
+        }
+        Ok(())
     }
 }
 
@@ -160,6 +198,32 @@ fn id_ranges(ids: &[u64]) -> String {
     parts.join(", ")
 }
 
+/// "0-4,7,9-10" (as `--runs` takes them) -> ascending ids without repeats.
+pub fn parse_ranges(text: &str) -> Result<Vec<u64>, String> {
+    let bad = |part: &str| {
+        format!(
+            "`{part}` is not a run id or a range of them: write e.g. `3,7-9` (the run_id column)"
+        )
+    };
+    let mut ids = std::collections::BTreeSet::new();
+    for part in text.split(',').map(str::trim) {
+        let number = |s: &str| s.trim().parse::<u64>().map_err(|_| bad(part));
+        match part.split_once('-') {
+            Some((a, b)) => {
+                let (a, b) = (number(a)?, number(b)?);
+                if a > b {
+                    return Err(bad(part));
+                }
+                ids.extend(a..=b);
+            }
+            None => {
+                ids.insert(number(part)?);
+            }
+        }
+    }
+    Ok(ids.into_iter().collect())
+}
+
 /// What a collect made.
 #[derive(Debug, Clone)]
 pub struct Collected {
@@ -171,6 +235,13 @@ pub struct Collected {
     /// Runs whose record says they failed: in runs.parquet with their
     /// status, absent from the statistics.
     pub failed: Vec<Unfinished>,
+    /// The command that retries exactly the failed runs, records only ("" if
+    /// none failed); `study collect` then remakes the tables.
+    pub retry: String,
+    /// CPU seconds the runs took, as their records say, and as the plan's
+    /// estimate expected.
+    pub cpu_seconds: f64,
+    pub estimated_seconds: f64,
 }
 
 /// The records of every run of the plan `specs`, in plan order.
@@ -231,6 +302,7 @@ pub fn collect(
     invocation: &Invocation,
 ) -> Result<Collected, StudyError> {
     let planned = specs.len();
+    let estimated_seconds: f64 = crate::runner::shard::estimated_seconds(&specs).iter().sum();
     let Records {
         runs,
         missing,
@@ -240,10 +312,21 @@ pub fn collect(
         return Err(StudyError::Other(anyhow::Error::new(MissingRuns {
             out_dir: out_dir.to_path_buf(),
             planned,
+            rerun: invocation.rerun.whole(),
+            exact: (missing.len() < planned).then(|| {
+                invocation
+                    .rerun
+                    .for_runs(&missing.iter().map(|u| u.run_id).collect::<Vec<_>>())
+            }),
+            collect: invocation.rerun.out.clone(),
             missing,
-            rerun: invocation.rerun.clone(),
         })));
     }
+    let cpu_seconds: f64 = runs
+        .iter()
+        .map(|(_, r)| r.output.cpu_seconds)
+        .filter(|s| s.is_finite())
+        .sum();
 
     let staging = Staging::create(out_dir)?;
     let summary = summarize(&runs);
@@ -292,12 +375,21 @@ pub fn collect(
     };
     write_manifest(&staging, loaded, invocation, meta, counts)?;
     staging.publish()?;
+    let retry = if failed.is_empty() {
+        String::new()
+    } else {
+        let ids: Vec<u64> = failed.iter().map(|u| u.run_id).collect();
+        invocation.rerun.for_runs(&ids)
+    };
     Ok(Collected {
         out_dir: out_dir.to_path_buf(),
         planned,
         ran: invocation.ran,
         resumed,
         failed,
+        retry,
+        cpu_seconds,
+        estimated_seconds,
     })
 }
 
@@ -381,7 +473,19 @@ const MOVIE_FILE: &str = "movie.svg";
 
 #[cfg(test)]
 mod tests {
-    use super::id_ranges;
+    use super::{id_ranges, parse_ranges};
+
+    #[test]
+    fn ranges_parse_back() {
+        assert_eq!(
+            parse_ranges("0-4,7,9-10"),
+            Ok(vec![0, 1, 2, 3, 4, 7, 9, 10])
+        );
+        assert_eq!(parse_ranges("5, 3,3"), Ok(vec![3, 5]));
+        for bad in ["", "4-2", "x", "1-", "-3"] {
+            assert!(parse_ranges(bad).is_err(), "{bad}");
+        }
+    }
 
     #[test]
     fn ids_are_shown_as_ranges() {

@@ -1,55 +1,130 @@
-//! One `study run` per output directory. The run that owns a directory holds
-//! an advisory lock on `OUT/.study.lock` (which also names its process id);
-//! a second run on the same directory fails at once, rather than mixing its
-//! files with the first's. The system drops the lock when its process ends,
-//! however it ends, so a killed run leaves nothing to clean up. The file
-//! itself stays: deleting a lock file races with a process about to lock it.
+//! Who may write into an output directory. A whole `study run` and
+//! `study collect` hold an exclusive advisory lock on `OUT/.study.lock`;
+//! the parts of a plan (`--shard K/N`, `--runs`) hold it shared, so any
+//! number of them can add records side by side while none of them can
+//! overlap a whole run or a collect. A shard also holds
+//! `OUT/.shard-K-of-N.lock` exclusively, so the same shard never runs twice
+//! at once (a requeued array task whose first copy still runs fails fast).
+//! Each lock file names the process id of its last exclusive owner. The
+//! system drops the locks when the process ends, however it ends, so a
+//! killed run leaves nothing to clean up. The files stay: deleting a lock
+//! file races with a process about to lock it. flock-style locks also work
+//! on NFS and Lustre (Linux emulates them with POSIX locks there).
 
 use anyhow::{Context, bail};
 use std::fs::{File, OpenOptions, TryLockError};
 use std::io::{Read, Seek, Write};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 pub const LOCK_FILE: &str = ".study.lock";
 
 /// Held while a study writes into its output directory.
 #[derive(Debug)]
 pub struct OutLock {
-    _file: File,
+    _files: Vec<File>,
 }
 
 impl OutLock {
+    /// The whole directory, for a whole run or a collect.
     pub fn acquire(out_dir: &Path) -> anyhow::Result<OutLock> {
         let path = out_dir.join(LOCK_FILE);
-        let mut file = OpenOptions::new()
-            .read(true)
-            .write(true)
-            .create(true)
-            .truncate(false)
-            .open(&path)
-            .with_context(|| format!("cannot open the lock file {}", path.display()))?;
+        let mut file = open(&path)?;
         match file.try_lock() {
             Ok(()) => {}
-            Err(TryLockError::WouldBlock) => {
-                let mut owner = String::new();
-                let _ = file.read_to_string(&mut owner);
-                let owner = match owner.trim() {
-                    "" => String::new(),
-                    pid => format!(" (process {pid})"),
-                };
-                bail!(
-                    "another `study run`{owner} is writing to {}; wait for it to finish, or give this one another --out",
-                    out_dir.display()
-                );
-            }
+            Err(TryLockError::WouldBlock) => bail!(
+                "another `study run`{} (or a shard of one) is writing to {}; wait for it to finish, or give this one another --out",
+                owner(&mut file),
+                out_dir.display()
+            ),
             Err(TryLockError::Error(e)) => {
                 return Err(e).with_context(|| format!("cannot lock {}", path.display()));
             }
         }
-        file.set_len(0)
-            .and_then(|()| file.rewind())
-            .and_then(|()| writeln!(file, "{}", std::process::id()))
-            .with_context(|| format!("cannot write {}", path.display()))?;
-        Ok(OutLock { _file: file })
+        name_owner(&mut file, &path)?;
+        Ok(OutLock { _files: vec![file] })
     }
+
+    /// A part of the plan: shared with other parts; `shard` ("K-of-N")
+    /// also locks that shard's own file.
+    pub fn shared(out_dir: &Path, shard: Option<&str>) -> anyhow::Result<OutLock> {
+        let path = out_dir.join(LOCK_FILE);
+        let mut file = open(&path)?;
+        match file.try_lock_shared() {
+            Ok(()) => {}
+            Err(TryLockError::WouldBlock) => bail!(
+                "a whole `study run` or a `study collect`{} is using {}; run this part when it has finished",
+                owner(&mut file),
+                out_dir.display()
+            ),
+            Err(TryLockError::Error(e)) => {
+                return Err(e).with_context(|| format!("cannot lock {}", path.display()));
+            }
+        }
+        let mut files = vec![file];
+        if let Some(shard) = shard {
+            let path = shard_lock(out_dir, shard);
+            let mut own = open(&path)?;
+            match own.try_lock() {
+                Ok(()) => {}
+                Err(TryLockError::WouldBlock) => bail!(
+                    "shard {} is already running{} in {}; it goes on there, so this copy stops",
+                    shard.replace("-of-", "/"),
+                    owner(&mut own),
+                    out_dir.display()
+                ),
+                Err(TryLockError::Error(e)) => {
+                    return Err(e).with_context(|| format!("cannot lock {}", path.display()));
+                }
+            }
+            name_owner(&mut own, &path)?;
+            files.push(own);
+        }
+        Ok(OutLock { _files: files })
+    }
+}
+
+/// `OUT/.shard-K-of-N.lock`.
+pub fn shard_lock(out_dir: &Path, shard: &str) -> PathBuf {
+    out_dir.join(format!(".shard-{shard}.lock"))
+}
+
+/// The process holding a shard's lock, if one does: its id, or "" if the
+/// file does not name it. None when nobody holds it (or it cannot be read).
+pub fn holder(path: &Path) -> Option<String> {
+    let mut file = File::open(path).ok()?;
+    match file.try_lock_shared() {
+        Err(TryLockError::WouldBlock) => {
+            let mut pid = String::new();
+            let _ = file.read_to_string(&mut pid);
+            Some(pid.trim().to_string())
+        }
+        _ => None,
+    }
+}
+
+fn open(path: &Path) -> anyhow::Result<File> {
+    OpenOptions::new()
+        .read(true)
+        .write(true)
+        .create(true)
+        .truncate(false)
+        .open(path)
+        .with_context(|| format!("cannot open the lock file {}", path.display()))
+}
+
+/// " (process 123)" as the lock file says, or "".
+fn owner(file: &mut File) -> String {
+    let mut owner = String::new();
+    let _ = file.read_to_string(&mut owner);
+    match owner.trim() {
+        "" => String::new(),
+        pid => format!(" (process {pid})"),
+    }
+}
+
+fn name_owner(file: &mut File, path: &Path) -> anyhow::Result<()> {
+    file.set_len(0)
+        .and_then(|()| file.rewind())
+        .and_then(|()| writeln!(file, "{}", std::process::id()))
+        .with_context(|| format!("cannot write {}", path.display()))
 }

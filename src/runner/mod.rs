@@ -1,12 +1,14 @@
 //! `study run`: descriptor -> plan -> parallel runs -> run records, then
 //! `collect`: run records -> tables -> report.
 
+pub mod checkpoint;
 pub mod collect;
 pub mod cpu_time;
 pub mod estimate;
 pub mod lock;
 pub mod manifest;
 pub mod movie;
+pub mod origin;
 pub mod pipeline;
 pub mod plan;
 pub mod progress;
@@ -14,5 +16,8 @@ pub mod publish;
 pub mod record;
 pub mod run;
 pub mod seeds;
+pub mod shard;
 pub mod simulate;
+pub mod slurm;
+pub mod status;
 pub mod store;

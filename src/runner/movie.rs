@@ -2,13 +2,13 @@
 //! are deterministic, so this is the run as it happened: the same scene, the
 //! same engine, positions read at exact frame times.
 
-use super::simulate::{balls, rods, start};
-use crate::engine::{Dynamics, Stop};
+use super::simulate::start;
+use crate::engine::{Chain, NeighbourList, Neighbourhood, Simulation, Stop};
 use crate::model::movie::{Film, MovieSpec};
 use crate::model::run_spec::RunSpec;
 use crate::observe::film::Filming;
 use crate::scene;
-use anyhow::{anyhow, bail};
+use anyhow::{Context, anyhow, bail};
 
 /// The frames of `spec`'s run over `movie.duration` from time 0.
 pub fn film(spec: &RunSpec, movie: &MovieSpec) -> anyhow::Result<Film> {
@@ -17,18 +17,10 @@ pub fn film(spec: &RunSpec, movie: &MovieSpec) -> anyhow::Result<Film> {
         1 => {
             let (built, seed) = start::<1>(spec, &scene)?;
             let camera = camera(&built, spec);
-            shoot(rods(&built, camera, seed)?, movie)
+            shoot::<1, Chain>(&built, camera, seed, movie)
         }
-        2 => {
-            let (built, seed) = start::<2>(spec, &scene)?;
-            let camera = camera(&built, spec);
-            shoot(balls(&built, camera, seed)?, movie)
-        }
-        3 => {
-            let (built, seed) = start::<3>(spec, &scene)?;
-            let camera = camera(&built, spec);
-            shoot(balls(&built, camera, seed)?, movie)
-        }
+        2 => balls::<2>(spec, &scene, movie),
+        3 => balls::<3>(spec, &scene, movie),
         d => bail!("scene.dimension = {d}; use 1, 2 or 3"),
     }
 }
@@ -43,16 +35,37 @@ fn camera<const D: usize>(built: &scene::build::Built<D>, spec: &RunSpec) -> Fil
     )
 }
 
-fn shoot<const D: usize>(
-    mut sim: Box<dyn Dynamics<D, Filming>>,
+/// Disks and spheres, with plane support only when the scene has a piston
+/// wall (as the measured run had).
+fn balls<const D: usize>(
+    spec: &RunSpec,
+    scene: &crate::model::scene::SceneSpec,
     movie: &MovieSpec,
 ) -> anyhow::Result<Film> {
+    let (built, seed) = start::<D>(spec, scene)?;
+    let camera = camera(&built, spec);
+    if built.particles.iter().any(|p| p.is_plane()) {
+        shoot::<D, NeighbourList<D, true>>(&built, camera, seed, movie)
+    } else {
+        shoot::<D, NeighbourList<D>>(&built, camera, seed, movie)
+    }
+}
+
+fn shoot<const D: usize, N: Neighbourhood<D>>(
+    built: &scene::build::Built<D>,
+    camera: Filming,
+    seed: u64,
+    movie: &MovieSpec,
+) -> anyhow::Result<Film> {
+    let mut sim: Simulation<D, N, Filming> =
+        Simulation::new(built.particles.clone(), built.sim_box, camera, seed)
+            .context("the scene cannot be simulated")?;
     let frames = movie.frames.max(2);
     let every = movie.duration / (frames - 1) as f64;
     sim.sample_every(Some(every));
     // Half a frame past the end: the last frame is at `duration` whatever
     // the rounding of the sample times, and no frame comes after it.
-    sim.advance(Stop::Time(movie.duration + 0.5 * every));
+    sim.run(Stop::Time(movie.duration + 0.5 * every));
     let mut film = sim.into_observer().into_film();
     film.times.truncate(frames);
     for track in &mut film.tracks {

@@ -6,16 +6,19 @@ use crate::descriptor::errors::{DescriptorError, StudyError};
 use crate::descriptor::load::{self, Loaded};
 use crate::descriptor::sweep::{self, CONFIRM_ABOVE};
 use crate::model::run_spec::RunSpec;
-use crate::runner::collect::{self, Collected, Invocation};
+use crate::runner::checkpoint;
+use crate::runner::collect::{self, Collected, Invocation, RunCommand};
 use crate::runner::lock::OutLock;
+use crate::runner::origin::{self, Origin};
 use crate::runner::plan;
 use crate::runner::progress::ProgressMode;
 use crate::runner::publish;
 use crate::runner::run::{RunnerOptions, RunnerReport, SimulateFn, Subset, run_subset};
+use crate::runner::shard::{self, Shard};
 use anyhow::Context;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
-use std::time::{Instant, SystemTime};
+use std::time::{Duration, Instant, SystemTime};
 
 /// Options of `study run` (and what `study validate` shares).
 #[derive(Debug, Clone)]
@@ -31,6 +34,9 @@ pub struct StudyOptions {
     pub yes: bool,
     /// Recorded in the manifest.
     pub command_line: Vec<String>,
+    /// Wall time between checkpoints of a run (`checkpoint.rs`); None: the
+    /// default, five minutes; zero: no checkpoints.
+    pub checkpoint_every: Option<Duration>,
 }
 
 /// Options of `study collect`: those that find the plan and its folder.
@@ -53,6 +59,8 @@ pub struct StudyOutcome {
     pub ran: usize,
     pub failed: usize,
     pub resumed: usize,
+    /// Run now from a checkpoint an earlier invocation saved.
+    pub continued: usize,
 }
 
 /// Load the descriptor and apply `--quick` and `--replicas`, in that order.
@@ -97,6 +105,9 @@ struct Planned {
     loaded: Loaded,
     specs: Vec<RunSpec>,
     out_dir: PathBuf,
+    origin: Origin,
+    /// The descriptor's path as given (the origin's is absolute).
+    path: PathBuf,
 }
 
 fn plan_study(
@@ -112,11 +123,35 @@ fn plan_study(
     let out_dir = out
         .cloned()
         .unwrap_or_else(|| default_out_dir(&loaded, quick));
+    let origin = Origin::new(path, &loaded, quick, replicas, yes);
     Ok(Planned {
         loaded,
         specs,
         out_dir,
+        origin,
+        path: path.to_path_buf(),
     })
+}
+
+/// The plan whose runs are in `out_dir`, from its `.study.json`.
+fn plan_folder(out_dir: &Path) -> Result<Planned, StudyError> {
+    let origin = origin::load(out_dir)?;
+    let loaded = origin.loaded()?;
+    let specs = plan::plan(&loaded)?;
+    Ok(Planned {
+        loaded,
+        specs,
+        out_dir: out_dir.to_path_buf(),
+        path: origin.file.clone(),
+        origin,
+    })
+}
+
+impl Planned {
+    fn rerun(&self) -> RunCommand {
+        let o = &self.origin;
+        rerun(&self.path, &self.out_dir, o.quick, o.replicas, o.yes)
+    }
 }
 
 /// Create and lock the output folder, and remove what a killed invocation left.
@@ -128,6 +163,15 @@ fn claim(out_dir: &Path) -> Result<OutLock, StudyError> {
     Ok(lock)
 }
 
+/// Create the output folder and lock it shared with other parts of the
+/// plan (`shard`: and that shard's own lock). Nothing is removed: the
+/// leftovers may be another part's work in flight.
+fn claim_shared(out_dir: &Path, shard: Option<Shard>) -> Result<OutLock, StudyError> {
+    std::fs::create_dir_all(out_dir)
+        .with_context(|| format!("cannot create the output directory {}", out_dir.display()))?;
+    Ok(OutLock::shared(out_dir, shard.map(|s| s.tag()).as_deref())?)
+}
+
 /// The `study run` command that runs (or resumes) the plan these flags make,
 /// into `out_dir`: what to type when runs are missing.
 pub fn run_command(
@@ -137,27 +181,37 @@ pub fn run_command(
     replicas: Option<u32>,
     yes: bool,
 ) -> String {
-    let mut words = vec![
-        "study".to_string(),
-        "run".to_string(),
-        shell_word(&path.to_string_lossy()),
-        "--out".to_string(),
-        shell_word(&out_dir.to_string_lossy()),
-    ];
+    rerun(path, out_dir, quick, replicas, yes).whole()
+}
+
+/// `run_command` in parts, so a `--runs` can go between them.
+pub fn rerun(
+    path: &Path,
+    out_dir: &Path,
+    quick: bool,
+    replicas: Option<u32>,
+    yes: bool,
+) -> RunCommand {
+    let out = shell_word(&out_dir.to_string_lossy());
+    let head = format!(
+        "study run {} --out {out}",
+        shell_word(&path.to_string_lossy())
+    );
+    let mut tail = String::new();
     if quick {
-        words.push("--quick".to_string());
+        tail += " --quick";
     }
     if let Some(n) = replicas {
-        words.push(format!("--replicas {n}"));
+        tail += &format!(" --replicas {n}");
     }
     if yes {
-        words.push("--yes".to_string());
+        tail += " --yes";
     }
-    words.join(" ")
+    RunCommand { head, tail, out }
 }
 
 /// `word` as a POSIX shell reads it back: bare if it is plain, else quoted.
-fn shell_word(word: &str) -> String {
+pub fn shell_word(word: &str) -> String {
     let plain = |c: char| c.is_ascii_alphanumeric() || "-_./=:,+@%".contains(c);
     if !word.is_empty() && word.chars().all(plain) {
         word.to_string()
@@ -166,13 +220,22 @@ fn shell_word(word: &str) -> String {
     }
 }
 
+/// How the caller holds the output folder.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Claim {
+    /// Alone (exclusive lock); `keep`: hand the records back for a collect.
+    Whole { keep: bool },
+    /// Beside other parts of the plan (shared lock): remove nothing of theirs.
+    Shared,
+}
+
 /// Run the picked runs of the plan into records; Ctrl-C is an error that
 /// says how many runs are kept. Returns the report and its wall time.
 fn compute(
     planned: &Planned,
     subset: Subset<'_>,
     options: &StudyOptions,
-    keep: bool,
+    claim: Claim,
     simulate: &SimulateFn<'_>,
     stop: &AtomicBool,
 ) -> Result<(RunnerReport, f64), StudyError> {
@@ -180,8 +243,15 @@ fn compute(
         threads: options.threads,
         fresh: options.fresh,
         progress: options.progress,
-        keep,
+        keep: matches!(claim, Claim::Whole { keep: true }),
+        shared: claim == Claim::Shared,
+        checkpoint_every: match options.checkpoint_every {
+            None => Some(checkpoint::DEFAULT_EVERY),
+            Some(every) if every.is_zero() => None,
+            every => every,
+        },
     };
+    origin::save(&planned.out_dir, &planned.origin)?;
     let clock = Instant::now();
     let report = run_subset(
         &planned.specs,
@@ -217,8 +287,14 @@ pub fn run_study(
         options.out.as_ref(),
     )?;
     let _lock = claim(&planned.out_dir)?;
-    let (mut report, runs_wall_seconds) =
-        compute(&planned, Subset::All, options, true, simulate, stop)?;
+    let (mut report, runs_wall_seconds) = compute(
+        &planned,
+        Subset::All,
+        options,
+        Claim::Whole { keep: true },
+        simulate,
+        stop,
+    )?;
     let invocation = Invocation {
         command_line: options.command_line.clone(),
         started,
@@ -226,18 +302,13 @@ pub fn run_study(
         threads: report.threads,
         runs_wall_seconds,
         ran: report.ran,
-        rerun: run_command(
-            path,
-            &planned.out_dir,
-            options.quick,
-            options.replicas,
-            options.yes,
-        ),
+        rerun: planned.rerun(),
     };
     let Planned {
         loaded,
         specs,
         out_dir,
+        ..
     } = planned;
     let records = std::mem::take(&mut report.records);
     collect::collect(&loaded, specs, records, &out_dir, &invocation)?;
@@ -247,6 +318,7 @@ pub fn run_study(
         ran: report.ran,
         failed: report.failed,
         resumed: report.resumed,
+        continued: report.continued,
     })
 }
 
@@ -268,7 +340,103 @@ pub fn run_part(
         options.out.as_ref(),
     )?;
     let _lock = claim(&planned.out_dir)?;
-    Ok(compute(&planned, subset, options, false, simulate, stop)?.0)
+    let claim = Claim::Whole { keep: false };
+    Ok(compute(&planned, subset, options, claim, simulate, stop)?.0)
+}
+
+/// Which part of a plan `run_slice` runs.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Slice {
+    /// `--shard K/N` (see `shard.rs`).
+    Shard(Shard),
+    /// `--runs 3,7-9`: these run ids.
+    Runs(Vec<u64>),
+}
+
+/// A part of the plan at `path` (`--shard`, `--runs`), run into records
+/// beside any other parts running at the same time in the same folder (a
+/// shared lock: see `lock.rs`). No tables: `study collect` makes them.
+pub fn run_slice(
+    path: &Path,
+    options: &StudyOptions,
+    slice: &Slice,
+    simulate: &SimulateFn<'_>,
+    stop: &AtomicBool,
+) -> Result<RunnerReport, StudyError> {
+    let planned = plan_study(
+        path,
+        options.replicas,
+        options.quick,
+        options.yes,
+        options.out.as_ref(),
+    )?;
+    let shard = match slice {
+        Slice::Shard(s) => Some(*s),
+        Slice::Runs(_) => None,
+    };
+    let _lock = claim_shared(&planned.out_dir, shard)?;
+    let report = match slice {
+        Slice::Shard(s) => {
+            let dealt = shard::deal(&shard::estimated_seconds(&planned.specs), s.count);
+            let ids: Vec<u64> = planned
+                .specs
+                .iter()
+                .zip(&dealt)
+                .filter(|&(_, &k)| k == s.index)
+                .map(|(spec, _)| spec.run_id)
+                .collect();
+            compute(
+                &planned,
+                Subset::Ids(&ids),
+                options,
+                Claim::Shared,
+                simulate,
+                stop,
+            )?
+        }
+        Slice::Runs(ids) => compute(
+            &planned,
+            Subset::Ids(ids),
+            options,
+            Claim::Shared,
+            simulate,
+            stop,
+        )?,
+    };
+    Ok(report.0)
+}
+
+/// `study collect DIR`: as `collect_study`, with the plan that the folder's
+/// `.study.json` saved.
+pub fn collect_folder(out_dir: &Path, command_line: Vec<String>) -> Result<Collected, StudyError> {
+    let started = SystemTime::now();
+    let clock = Instant::now();
+    let planned = plan_folder(out_dir)?;
+    let invocation = Invocation {
+        command_line,
+        started,
+        clock,
+        threads: 1,
+        runs_wall_seconds: 0.0,
+        ran: 0,
+        rerun: planned.rerun(),
+    };
+    let _lock = claim(out_dir)?;
+    collect::collect(
+        &planned.loaded,
+        planned.specs,
+        Vec::new(),
+        out_dir,
+        &invocation,
+    )
+}
+
+/// The plan of the runs in `out_dir` (from its `.study.json`): descriptor,
+/// runs, and the command that makes them.
+pub fn folder_plan(out_dir: &Path) -> Result<(Loaded, Vec<RunSpec>, RunCommand), StudyError> {
+    let planned = plan_folder(out_dir)?;
+    let rerun = planned.rerun();
+    Ok((planned.loaded, planned.specs, rerun))
 }
 
 /// `study collect`: the records of the plan at `path`, stored in its output
@@ -292,13 +460,7 @@ pub fn collect_study(path: &Path, options: &CollectOptions) -> Result<Collected,
         threads: 1,
         runs_wall_seconds: 0.0,
         ran: 0,
-        rerun: run_command(
-            path,
-            &planned.out_dir,
-            options.quick,
-            options.replicas,
-            options.yes,
-        ),
+        rerun: planned.rerun(),
     };
     let _lock = if planned.out_dir.is_dir() {
         Some(claim(&planned.out_dir)?)

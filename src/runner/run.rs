@@ -8,6 +8,7 @@
 
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
+use crate::runner::checkpoint::{self, Place};
 use crate::runner::cpu_time::thread_cpu_seconds;
 use crate::runner::progress::{Progress, ProgressMode};
 pub use crate::runner::record::RunRecord;
@@ -34,6 +35,14 @@ pub struct RunnerOptions {
     /// collect that follows need not parse their files again (seconds for a
     /// large study); off, the runner holds no run's outputs after saving it.
     pub keep: bool,
+    /// Other invocations (shards) may be writing into the same runs folder:
+    /// remove nothing of theirs, neither their temporary files nor records
+    /// of runs this plan does not have.
+    pub shared: bool,
+    /// Save each run's state this often (wall time) into
+    /// `OUT/runs/run-<seed>.ckpt`, and continue from it (`checkpoint.rs`);
+    /// None: no checkpoints.
+    pub checkpoint_every: Option<std::time::Duration>,
 }
 
 /// Which runs of a plan one call computes.
@@ -83,6 +92,8 @@ pub struct RunnerReport {
     pub resumed: usize,
     /// Some picked runs were not started because `stop` was raised.
     pub interrupted: bool,
+    /// Runs now that continued from a checkpoint an earlier invocation saved.
+    pub continued: usize,
     pub threads: usize,
     /// With `RunnerOptions::keep`: the record of each picked run that has
     /// one, by its position in the plan (None for the others); else empty.
@@ -158,7 +169,11 @@ pub fn run_subset(
         discard(specs, &picked, out_dir)?;
     }
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    let mut tidied = tidy(specs, out_dir)?;
+    let mut tidied = if options.shared {
+        Tidied::default()
+    } else {
+        tidy(specs, out_dir)?
+    };
 
     // Each saved record is read once, to learn whether it can be reused.
     let mut records: Vec<Option<RunRecord>> = Vec::new();
@@ -201,27 +216,37 @@ pub fn run_subset(
         .context("cannot start the worker threads")?;
     let progress = Progress::new(todo.len() as u64, options.progress);
 
-    // Some per run done; None for a run `stop` kept from starting.
-    let done: Vec<anyhow::Result<Option<RunRecord>>> = pool.install(|| {
+    // Some per run done (and whether it continued from a checkpoint); None
+    // for a run `stop` kept from starting.
+    let done: Vec<anyhow::Result<Option<(RunRecord, bool)>>> = pool.install(|| {
         todo.par_iter()
             .map(|&i| {
                 if stop.load(Ordering::SeqCst) {
                     return Ok(None);
                 }
-                let record = execute(&specs[i], simulate);
+                let place = options.checkpoint_every.map(|every| Place {
+                    path: checkpoint::file(&dir, specs[i].seed),
+                    every,
+                    fingerprint: fingerprint(&specs[i]),
+                    continued: false,
+                });
+                let (record, continued) =
+                    checkpoint::scoped(place, || execute(&specs[i], simulate));
                 save(out_dir, &specs[i], &record)?;
+                remove_checkpoint(&dir, specs[i].seed)?;
                 progress.finished(record.ok(), record.output.collisions);
-                Ok(Some(record))
+                Ok(Some((record, continued)))
             })
             .collect()
     });
     progress.finish();
 
-    let (mut ran, mut failed, mut interrupted) = (0, 0, false);
+    let (mut ran, mut failed, mut interrupted, mut resumed_runs) = (0, 0, false, 0);
     for (&i, result) in todo.iter().zip(done) {
         match result? {
-            Some(record) => {
+            Some((record, continued)) => {
                 ran += 1;
+                resumed_runs += usize::from(continued);
                 failed += usize::from(!record.ok());
                 if options.keep {
                     records[i] = Some(record);
@@ -236,6 +261,7 @@ pub fn run_subset(
         failed,
         resumed,
         interrupted,
+        continued: resumed_runs,
         threads,
         records,
     })
@@ -254,15 +280,24 @@ fn discard(specs: &[RunSpec], picked: &[usize], out_dir: &Path) -> anyhow::Resul
             .with_context(|| format!("cannot remove {}", dir.display()));
     }
     for &i in picked {
-        let path = run_file(out_dir, specs[i].seed);
-        match std::fs::remove_file(&path) {
-            Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
-                return Err(e).with_context(|| format!("cannot remove {}", path.display()));
-            }
-            _ => {}
-        }
+        remove_if_present(&run_file(out_dir, specs[i].seed))?;
+        remove_checkpoint(&dir, specs[i].seed)?;
     }
     Ok(())
+}
+
+/// A run's checkpoint, once its record is saved (or `--fresh` forgets it).
+fn remove_checkpoint(runs_dir: &Path, seed: u64) -> anyhow::Result<()> {
+    remove_if_present(&checkpoint::file(runs_dir, seed))
+}
+
+fn remove_if_present(path: &Path) -> anyhow::Result<()> {
+    match std::fs::remove_file(path) {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+            Err(e).with_context(|| format!("cannot remove {}", path.display()))
+        }
+        _ => Ok(()),
+    }
 }
 
 /// What `tidy` found among the saved runs.
@@ -297,12 +332,16 @@ impl Tidied {
     }
 }
 
-/// Remove temporary files an interrupted writer left and run files of no
-/// planned run, so the saved runs are those of this study.
+/// Remove temporary files an interrupted writer left and run files (records
+/// and checkpoints) of no planned run, so the saved runs are those of this
+/// study.
 fn tidy(specs: &[RunSpec], out_dir: &Path) -> anyhow::Result<Tidied> {
-    let planned: HashSet<PathBuf> = specs.iter().map(|s| run_file(out_dir, s.seed)).collect();
-    let mut tidied = Tidied::default();
     let dir = runs_dir(out_dir);
+    let planned: HashSet<PathBuf> = specs
+        .iter()
+        .flat_map(|s| [run_file(out_dir, s.seed), checkpoint::file(&dir, s.seed)])
+        .collect();
+    let mut tidied = Tidied::default();
     let entries =
         std::fs::read_dir(&dir).with_context(|| format!("cannot list {}", dir.display()))?;
     for entry in entries.flatten() {
@@ -312,7 +351,7 @@ fn tidy(specs: &[RunSpec], out_dir: &Path) -> anyhow::Result<Tidied> {
         if temporary || (name.starts_with("run-") && !planned.contains(&path)) {
             std::fs::remove_file(&path)
                 .with_context(|| format!("cannot remove {}", path.display()))?;
-            tidied.removed += usize::from(!temporary);
+            tidied.removed += usize::from(!temporary && name.ends_with(".json"));
         }
     }
     Ok(tidied)
@@ -334,7 +373,8 @@ fn execute(spec: &RunSpec, simulate: &SimulateFn<'_>) -> RunRecord {
     if output.wall_seconds == 0.0 {
         output.wall_seconds = start.elapsed().as_secs_f64();
     }
-    output.cpu_seconds = thread_cpu_seconds() - cpu;
+    // Plus what a run continued from a checkpoint had spent before.
+    output.cpu_seconds += thread_cpu_seconds() - cpu;
     RunRecord {
         run_id: spec.run_id,
         fingerprint: fingerprint(spec),

@@ -2,70 +2,204 @@
 //!
 //! The run loop (`simulate`) is written once against `engine::Dynamics`;
 //! which integrator moves the particles is decided by the factory the
-//! dimension picks (`rods` or `balls`), and nowhere else.
+//! dimension picks (`rods` or `balls`), and nowhere else. When the runner
+//! gives the run a checkpoint place (`checkpoint.rs`), the loop advances in
+//! short stretches and saves the run's state every few minutes of wall time,
+//! and a run that finds its checkpoint continues from it. A stretch ends at
+//! a time or a collision count, which the engine resumes from exactly as if
+//! it had not stopped, so the results are the same bit for bit.
 
-use crate::engine::{Chain, Dynamics, NeighbourList, Neighbourhood, Observer, Simulation, Stop};
+use crate::engine::{Chain, Dynamics, NeighbourList, Persist, Simulation, Stop};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::observe::{self, Context, ObserverSet};
+use crate::runner::checkpoint::{self, Phase, Place, Saved};
+use crate::runner::cpu_time::thread_cpu_seconds;
 use crate::scene;
 use crate::studies::{self, Start};
 use anyhow::{Context as _, anyhow, bail};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 /// Simulate one planned run. Errors are recorded in `runs.parquet` with the run.
 pub fn run(spec: &RunSpec) -> anyhow::Result<RunOutput> {
     let scene = scene::resolve(&spec.descriptor.scene).map_err(|e| anyhow!(e))?;
     match scene.dimension().map_err(|e| anyhow!(e))? {
         1 => simulate::<1>(spec, &scene, rods),
-        2 => simulate::<2>(spec, &scene, balls::<2, _>),
-        3 => simulate::<3>(spec, &scene, balls::<3, _>),
+        2 => simulate::<2>(spec, &scene, balls::<2>),
+        3 => simulate::<3>(spec, &scene, balls::<3>),
         d => bail!("scene.dimension = {d}; use 1, 2 or 3"),
     }
 }
 
-/// What moves a run's particles, seen through the trait only.
-type Engine<const D: usize> = Box<dyn Dynamics<D, ObserverSet<D>>>;
+/// What moves a run's particles, seen through the trait only, and able to
+/// save its full state for a checkpoint.
+pub trait Checkpointable<const D: usize>: Dynamics<D, ObserverSet<D>> {
+    /// The full state in the engine's save format (`engine::save`).
+    fn save_state(&self) -> std::io::Result<Vec<u8>>;
+}
+
+impl<const D: usize, N: Persist<D>> Checkpointable<D> for Simulation<D, N, ObserverSet<D>> {
+    fn save_state(&self) -> std::io::Result<Vec<u8>> {
+        let mut bytes = Vec::new();
+        self.save(&mut bytes)?;
+        Ok(bytes)
+    }
+}
+
+type Engine<const D: usize> = Box<dyn Checkpointable<D>>;
 
 /// Builds the dynamics of a built scene, given its observers and the seed of
-/// its random stream (thermal walls).
+/// its random stream (thermal walls), or continues the saved state given.
 type Factory<const D: usize> =
-    fn(&scene::Built<D>, ObserverSet<D>, u64) -> anyhow::Result<Engine<D>>;
+    fn(&scene::Built<D>, ObserverSet<D>, u64, Option<&[u8]>) -> anyhow::Result<Engine<D>>;
 
 /// Rods: the event-driven engine with a chain of neighbours.
-pub(super) fn rods<O: Observer<1> + 'static>(
+fn rods(
     built: &scene::Built<1>,
-    observers: O,
+    observers: ObserverSet<1>,
     seed: u64,
-) -> anyhow::Result<Box<dyn Dynamics<1, O>>> {
-    event_driven::<1, Chain, O>(built, observers, seed)
+    saved: Option<&[u8]>,
+) -> anyhow::Result<Engine<1>> {
+    event_driven::<1, Chain>(built, observers, seed, saved)
 }
 
 /// Disks and spheres: the event-driven engine with neighbour lists, with
 /// plane support only for scenes with a piston wall (others pay nothing for it).
-pub(super) fn balls<const D: usize, O: Observer<D> + 'static>(
+fn balls<const D: usize>(
     built: &scene::Built<D>,
-    observers: O,
+    observers: ObserverSet<D>,
     seed: u64,
-) -> anyhow::Result<Box<dyn Dynamics<D, O>>> {
+    saved: Option<&[u8]>,
+) -> anyhow::Result<Engine<D>> {
     if built.particles.iter().any(|p| p.is_plane()) {
-        event_driven::<D, NeighbourList<D, true>, O>(built, observers, seed)
+        event_driven::<D, NeighbourList<D, true>>(built, observers, seed, saved)
     } else {
-        event_driven::<D, NeighbourList<D>, O>(built, observers, seed)
+        event_driven::<D, NeighbourList<D>>(built, observers, seed, saved)
     }
 }
 
-fn event_driven<const D: usize, N: Neighbourhood<D> + 'static, O: Observer<D> + 'static>(
+fn event_driven<const D: usize, N: Persist<D> + 'static>(
     built: &scene::Built<D>,
-    observers: O,
+    observers: ObserverSet<D>,
     seed: u64,
-) -> anyhow::Result<Box<dyn Dynamics<D, O>>> {
-    let sim: Simulation<D, N, O> =
-        Simulation::new(built.particles.clone(), built.sim_box, observers, seed)
-            .context("the scene cannot be simulated")?;
+    saved: Option<&[u8]>,
+) -> anyhow::Result<Engine<D>> {
+    let sim: Simulation<D, N, ObserverSet<D>> = match saved {
+        Some(mut bytes) => Simulation::load(&mut bytes, observers)
+            .map_err(|e| anyhow!("the checkpoint cannot be continued: {e}"))?,
+        None => Simulation::new(built.particles.clone(), built.sim_box, observers, seed)
+            .context("the scene cannot be simulated")?,
+    };
     Ok(Box::new(sim))
+}
+
+/// Where a run stops: a simulation time, or a total collision count.
+#[derive(Clone, Copy)]
+enum Target {
+    Time(f64),
+    Collisions(u64),
+}
+
+/// A run's checkpointing: where, since when, and what it had spent before.
+struct Clock {
+    place: Option<Place>,
+    last_save: Instant,
+    started: Instant,
+    cpu_started: f64,
+    wall_before: f64,
+    cpu_before: f64,
+}
+
+impl Clock {
+    fn wall(&self) -> f64 {
+        self.wall_before + self.started.elapsed().as_secs_f64()
+    }
+}
+
+/// Advance to `target`: in one go without a checkpoint place; else in
+/// stretches of about a tenth of the checkpoint interval (at most a second),
+/// saving the run's state whenever the interval has passed.
+fn advance<const D: usize>(
+    sim: &mut Engine<D>,
+    target: Target,
+    phase: Phase,
+    clock: &mut Clock,
+) -> anyhow::Result<()> {
+    let Some(every) = clock.place.as_ref().map(|p| p.every) else {
+        sim.advance(match target {
+            Target::Time(t) => Stop::Time(t),
+            Target::Collisions(c) => Stop::Collisions(c.saturating_sub(sim.counts().collisions)),
+        });
+        return Ok(());
+    };
+    let stretch = (every / 10).clamp(Duration::from_millis(2), Duration::from_secs(1));
+    // Simulation time or collisions per stretch, adapted to take `stretch`.
+    let mut span = match target {
+        Target::Time(t) => (t - sim.time()) / 64.0,
+        Target::Collisions(_) => 1000.0,
+    };
+    loop {
+        let (stop, last) = match target {
+            Target::Time(t) => {
+                let next = sim.time() + span;
+                if span > 0.0 && next < t && next > sim.time() {
+                    (Stop::Time(next), false)
+                } else {
+                    (Stop::Time(t), true)
+                }
+            }
+            Target::Collisions(c) => {
+                let left = c.saturating_sub(sim.counts().collisions);
+                let step = span.max(1.0) as u64;
+                if step < left {
+                    (Stop::Collisions(step), false)
+                } else {
+                    (Stop::Collisions(left), true)
+                }
+            }
+        };
+        let began = Instant::now();
+        sim.advance(stop);
+        if last {
+            return Ok(());
+        }
+        let took = began.elapsed();
+        if took < stretch / 2 {
+            span *= 2.0;
+        } else if took > stretch * 2 {
+            span /= 2.0;
+        }
+        if clock.last_save.elapsed() >= every {
+            save(sim, phase, clock)?;
+            clock.last_save = Instant::now();
+        }
+    }
+}
+
+/// Write the run's checkpoint; a run whose observers cannot be saved goes
+/// on without checkpoints.
+fn save<const D: usize>(
+    sim: &mut Engine<D>,
+    phase: Phase,
+    clock: &mut Clock,
+) -> anyhow::Result<()> {
+    let Some(observers) = sim.observer_mut().save_state() else {
+        clock.place = None;
+        return Ok(());
+    };
+    let Some(place) = &clock.place else {
+        return Ok(());
+    };
+    let saved = Saved {
+        phase,
+        wall_seconds: clock.wall(),
+        cpu_seconds: clock.cpu_before + (thread_cpu_seconds() - clock.cpu_started),
+        observers,
+        engine: sim.save_state().context("cannot save the run's state")?,
+    };
+    checkpoint::write(place, &saved).context("cannot write the run's checkpoint")
 }
 
 /// The run's start: its scene drawn from the run's own stream, then the seed
@@ -93,31 +227,81 @@ fn simulate<const D: usize>(
             series.push(name.to_string());
         }
     }
-    let observers: ObserverSet<D> = observe::build(
-        &series,
-        &d.observe.scalars,
-        &d.observe.histograms,
-        built.piston,
-    )
-    .map_err(|e| anyhow!("observe: {e}"))?;
-    let mut sim = factory(&built, observers, engine_seed)?;
-
-    let equilibrate = d.run.equilibrate;
-    if equilibrate > 0.0 {
-        sim.advance(Stop::Time(equilibrate));
-    }
-    let start = sim.time();
-    let energy0 = sim.kinetic_energy();
-    sim.observer_mut().recording = true;
-    sim.sample_every(d.run.sample_every);
-    let stop = match (d.run.duration, d.run.collisions) {
-        (Some(t), _) => Stop::Time(start + t),
-        (None, Some(n)) => Stop::Collisions(n),
-        (None, None) => bail!("[run] needs `duration` or `collisions`"),
+    let observers = || -> anyhow::Result<ObserverSet<D>> {
+        observe::build(
+            &series,
+            &d.observe.scalars,
+            &d.observe.histograms,
+            built.piston,
+        )
+        .map_err(|e| anyhow!("observe: {e}"))
     };
-    sim.advance(stop);
-    let duration = sim.time() - start;
+    let place = checkpoint::current();
+    // A checkpoint that does not continue (damaged, other observers) is
+    // ignored: the run starts over and overwrites it.
+    let resumed = place.as_ref().and_then(checkpoint::read).and_then(|saved| {
+        let mut set = observers().ok()?;
+        set.restore_state(&saved.observers).ok()?;
+        let sim = factory(&built, set, engine_seed, Some(&saved.engine)).ok()?;
+        Some((sim, saved))
+    });
+    let (mut sim, phase, wall_before, cpu_before) = match resumed {
+        Some((sim, saved)) => {
+            checkpoint::mark_continued();
+            (sim, saved.phase, saved.wall_seconds, saved.cpu_seconds)
+        }
+        None => (
+            factory(&built, observers()?, engine_seed, None)?,
+            Phase::Equilibrating,
+            0.0,
+            0.0,
+        ),
+    };
+    let mut clock = Clock {
+        place,
+        last_save: Instant::now(),
+        started,
+        cpu_started: thread_cpu_seconds(),
+        wall_before,
+        cpu_before,
+    };
 
+    if d.run.duration.is_none() && d.run.collisions.is_none() {
+        bail!("[run] needs `duration` or `collisions`");
+    }
+    let (start, energy0, end_collisions) = match phase {
+        Phase::Measuring {
+            start,
+            energy0,
+            end_collisions,
+        } => (start, energy0, end_collisions),
+        Phase::Equilibrating => {
+            let equilibrate = d.run.equilibrate;
+            if equilibrate > 0.0 {
+                advance(&mut sim, Target::Time(equilibrate), phase, &mut clock)?;
+            }
+            let start = sim.time();
+            let energy0 = sim.kinetic_energy();
+            sim.observer_mut().recording = true;
+            sim.sample_every(d.run.sample_every);
+            let end = match d.run.collisions {
+                Some(n) => sim.counts().collisions.saturating_add(n),
+                None => 0,
+            };
+            (start, energy0, end)
+        }
+    };
+    let target = match d.run.duration {
+        Some(t) => Target::Time(start + t),
+        None => Target::Collisions(end_collisions),
+    };
+    let measuring = Phase::Measuring {
+        start,
+        energy0,
+        end_collisions,
+    };
+    advance(&mut sim, target, measuring, &mut clock)?;
+    let duration = sim.time() - start;
     let counts = sim.counts();
     let mut out = RunOutput {
         events: counts.events,
@@ -164,7 +348,9 @@ fn simulate<const D: usize>(
         out.scalars.push(("packing_fraction".into(), prep.phi));
         out.prepare_seconds = prep.seconds;
     }
-    out.wall_seconds = started.elapsed().as_secs_f64();
+    out.wall_seconds = clock.wall();
+    // The runner adds what this thread spent now.
+    out.cpu_seconds = clock.cpu_before;
     Ok(out)
 }
 

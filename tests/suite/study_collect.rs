@@ -27,6 +27,7 @@ fn run_options(out: &Path) -> StudyOptions {
         progress: ProgressMode::Quiet,
         yes: false,
         command_line: vec!["study".into(), "run".into()],
+        checkpoint_every: None,
     }
 }
 

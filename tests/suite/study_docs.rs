@@ -60,6 +60,7 @@ fn the_documented_example_runs() {
         progress: ProgressMode::Quiet,
         yes: false,
         command_line: vec!["study".into()],
+        checkpoint_every: None,
     };
     let outcome = run_study(
         &file,

@@ -46,6 +46,7 @@ fn options(out: &Path, threads: usize) -> StudyOptions {
         progress: ProgressMode::Quiet,
         yes: false,
         command_line: vec!["study".into(), "run".into()],
+        checkpoint_every: None,
     }
 }
 

@@ -1,0 +1,92 @@
+//! `OUT/.study.json`: the descriptor text and the flags that planned the runs
+//! in OUT, written by every `study run` (whole or part) before it runs. With
+//! it, `study collect DIR` and `study status DIR` rebuild the same plan from
+//! the folder alone (on a cluster, the collect job may run long after the
+//! descriptor file was edited), and name the command that redoes a run.
+
+use crate::descriptor::errors::{DescriptorError, StudyError};
+use crate::descriptor::load::{self, Loaded};
+use anyhow::Context;
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+
+pub const ORIGIN_FILE: &str = ".study.json";
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Origin {
+    /// The descriptor file, absolute (jobs may start in another folder).
+    pub file: PathBuf,
+    /// Its text when the runs were planned.
+    pub text: String,
+    pub quick: bool,
+    pub replicas: Option<u32>,
+    pub yes: bool,
+}
+
+impl Origin {
+    pub fn new(
+        file: &Path,
+        loaded: &Loaded,
+        quick: bool,
+        replicas: Option<u32>,
+        yes: bool,
+    ) -> Self {
+        Origin {
+            file: std::path::absolute(file).unwrap_or_else(|_| file.to_path_buf()),
+            text: loaded.text.clone(),
+            quick,
+            replicas,
+            yes,
+        }
+    }
+
+    /// The descriptor as planned: the saved text with `--quick` and
+    /// `--replicas` applied, as `pipeline::prepare` applies them.
+    pub fn loaded(&self) -> Result<Loaded, DescriptorError> {
+        let mut loaded = load::parse(&self.file.display().to_string(), &self.text)?;
+        if self.quick {
+            loaded = load::quick(&loaded)?;
+        }
+        if let Some(n) = self.replicas {
+            loaded = load::with_replicas(&loaded, n)?;
+        }
+        Ok(loaded)
+    }
+}
+
+/// Save `origin` in `out_dir`, unless the same is already there (shards
+/// starting together then write nothing).
+pub fn save(out_dir: &Path, origin: &Origin) -> anyhow::Result<()> {
+    if read(out_dir).is_ok_and(|o| o == *origin) {
+        return Ok(());
+    }
+    let json = serde_json::to_string_pretty(origin).context("cannot encode .study.json")?;
+    crate::files::write_atomic(&out_dir.join(ORIGIN_FILE), json.as_bytes())
+}
+
+fn read(out_dir: &Path) -> anyhow::Result<Origin> {
+    let path = out_dir.join(ORIGIN_FILE);
+    let text = std::fs::read_to_string(&path)
+        .with_context(|| format!("cannot read {}", path.display()))?;
+    serde_json::from_str(&text).with_context(|| format!("{} does not parse", path.display()))
+}
+
+/// The origin saved in `out_dir`; a folder without one is bad input.
+pub fn load(out_dir: &Path) -> Result<Origin, StudyError> {
+    let path = out_dir.join(ORIGIN_FILE);
+    if !path.is_file() {
+        let what = if out_dir.is_dir() {
+            "is not the output folder of a study: it has no .study.json"
+        } else {
+            "is not a folder"
+        };
+        return Err(DescriptorError::new(&out_dir.display().to_string(), what)
+            .hint("give the --out folder of a `study run` (a bonkers older than .study.json: give the descriptor and --out instead)")
+            .into());
+    }
+    read(out_dir).map_err(|e| {
+        DescriptorError::new(&path.display().to_string(), format!("{e:#}"))
+            .hint("the file is written by `study run`; run it again to rewrite it")
+            .into()
+    })
+}
