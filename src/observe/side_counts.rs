@@ -42,7 +42,7 @@ impl<const D: usize> Probe<D> for SideCounts {
         }
     }
     fn name(&self, k: usize, ctx: &Context) -> String {
-        let side = if k % 2 == 0 { "left" } else { "right" };
+        let side = if k.is_multiple_of(2) { "left" } else { "right" };
         match ctx.species.get(k / 2) {
             Some(species) => format!("count.{species}.{side}"),
             None => format!("count.{}.{side}", k / 2),

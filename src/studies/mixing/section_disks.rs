@@ -55,6 +55,31 @@ pub fn predicted(p: &Point, all: &[Point]) -> (f64, f64) {
     (tau, tau * d.stderr / d.mean)
 }
 
+/// The bulk fluid's velocity memory time D m/kT (m the mean of the two
+/// species' masses, kT = 1 in reduced units): diffusion holds only beyond it.
+fn memory(p: &Point, all: &[Point]) -> f64 {
+    let Some(q) = bulk(p, all) else {
+        return f64::NAN;
+    };
+    let kt = super::disks::temperature(&q.spec.descriptor).unwrap_or(f64::NAN);
+    let mean_mass = mean_mass(q);
+    q.stat("diffusion").mean * mean_mass / kt
+}
+
+/// The mean mass of the disks of a point, from its descriptor.
+fn mean_mass(p: &Point) -> f64 {
+    let Ok(scene) = crate::scene::resolve(&p.spec.descriptor.scene) else {
+        return f64::NAN;
+    };
+    let (mut total, mut count) = (0.0, 0.0);
+    for s in &scene.species {
+        let [lo, hi] = s.mass.bounds();
+        total += 0.5 * (lo + hi) * s.count as f64;
+        count += s.count as f64;
+    }
+    total / count
+}
+
 /// The centres' room along x: the box less a mean diameter.
 fn room(p: &Point) -> f64 {
     let scene = crate::scene::resolve(&p.spec.descriptor.scene).ok();
@@ -74,8 +99,8 @@ pub fn write(points: &[Point], md: &mut String, figures: &mut Vec<Figure>) {
         points.iter().partition(|p| !p.first("mixed").is_nan());
     let _ = writeln!(
         md,
-        "| point | Kn = λ/L | runs | mixed | τ | τ diffusive (bulk D) | τ / τ diffusive | late fraction of A on the left (½) | CPU s | collisions |\n\
-         |---|---|---|---|---|---|---|---|---|---|"
+        "| point | Kn = λ/L | runs | mixed | τ | τ diffusive (bulk D) | τ / τ diffusive | velocity memory D m̄/kT | late fraction of A on the left (½) | CPU s | collisions |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|"
     );
     for p in &mixing {
         let (k, n) = (p.mixed(), p.outs.len());
@@ -94,7 +119,7 @@ pub fn write(points: &[Point], md: &mut String, figures: &mut Vec<Figure>) {
         let late = p.stat("late_left_fraction");
         let _ = writeln!(
             md,
-            "| {} | {} | {n} | {k}/{n} | {tau_text} | {} | {} | {} | {} | {} |",
+            "| {} | {} | {n} | {k}/{n} | {tau_text} | {} | {} | {} | {} | {} | {} |",
             label(p),
             num(p.first("knudsen")),
             pm(pred, pred_se),
@@ -103,6 +128,7 @@ pub fn write(points: &[Point], md: &mut String, figures: &mut Vec<Figure>) {
             } else {
                 "—".into()
             },
+            num(memory(p, points)),
             pm(late.mean, late.stderr),
             num(p.cpu()),
             count(p.collisions()),
@@ -290,10 +316,12 @@ distinguishes the particles could be a physical attribute such as mass, or a fic
 colour). […] Plot the number of particles of each type on each side of the box as a function of time. \
 (Imperial, \"Mixing\")\n\n\
 Species A starts in the left half and B in the right half of a box with walls along x (periodic along \
-y). The disks of each kind in each half are counted at every sample. When the mean free path λ is short \
-against the box (Kn = λ/L ≪ 1) the two gases interdiffuse, and the diffusion equation between the \
-walls predicts the whole curve from D alone; when it is not, the disks cross the box ballistically and \
-mix faster than diffusion says. D is measured in a periodic box of the same packing fraction and mass ratio \
+y). The disks of each kind in each half are counted at every sample. When the mean free path λ is short against the box (Kn = λ/L ≪ 1) \
+the two gases interdiffuse, and the diffusion equation between the walls predicts the whole curve from \
+D alone. It holds only after the velocity memory time D m̄/kT, though (the mean-squared displacement is \
+2D(t − D m̄/kT) beyond it, ballistic before): where that is not small against τ, as in a dilute gas, \
+the disks still fly freely on the scale of the box and mix later than diffusion predicts; with no \
+collisions at all D is infinite and the prediction zero, while free flight takes about L/v. D is measured in a periodic box of the same packing fraction and mass ratio \
 (the bulk fluid: below), as the slope of the mean-squared displacement.\n\n";
 
 const BULK: &str = "**The bulk fluid's self-diffusion**, in a fully periodic square box of the same area, \
