@@ -3,14 +3,19 @@
 //! its file in this folder (a type implementing `Observable`) and its line
 //! here.
 
+use super::energy_autocorrelation::EnergyAutocorrelation;
+use super::energy_concentration::EnergyConcentration;
+use super::energy_share::EnergyShare;
 use super::entry::{Entry, Kind, Observable, Part, Setup};
 use super::gas_energy_by_side::GasEnergyBySide;
 use super::kinetic_energy::KineticEnergy;
 use super::kinetic_energy_by_species::KineticEnergyBySpecies;
 use super::left_fraction::LeftFraction;
+use super::mean_squared_displacement::Msd;
 use super::piston_position::PistonPosition;
 use super::positions::Positions;
 use super::scaled_velocity_x::ScaledVelocityX;
+use super::side_counts::SideCounts;
 use super::temperature::{MeanTemperature, Temperature};
 use super::virial_pressure::VirialPressure;
 use super::wall_heat::WallHeat;
@@ -48,6 +53,11 @@ catalogue![
     MeanTemperature,
     WallHeat,
     ScaledVelocityX,
+    EnergyShare,
+    EnergyConcentration,
+    EnergyAutocorrelation,
+    SideCounts,
+    Msd,
 ];
 
 /// The entry a descriptor means by `name` under `[observe] <kind>`.

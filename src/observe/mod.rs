@@ -7,19 +7,25 @@ pub mod catalogue;
 mod entry;
 pub mod film;
 mod histogram;
+mod lags;
 mod sampled;
 mod set;
 pub mod state;
 #[cfg(test)]
 mod tests;
 
+mod energy_autocorrelation;
+mod energy_concentration;
+mod energy_share;
 mod gas_energy_by_side;
 mod kinetic_energy;
 mod kinetic_energy_by_species;
 mod left_fraction;
+mod mean_squared_displacement;
 mod piston_position;
 mod positions;
 mod scaled_velocity_x;
+mod side_counts;
 mod temperature;
 mod virial_pressure;
 mod wall_heat;

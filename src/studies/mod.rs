@@ -4,6 +4,7 @@
 //! `REGISTRY`; a descriptor asks for it as `[analysis.<name>]`.
 
 pub mod expansion;
+pub mod mixing;
 pub mod options;
 pub mod piston;
 pub mod pressure;
@@ -18,7 +19,12 @@ use crate::scene::Built;
 pub use options::StudyOption;
 
 /// Every study bonkers knows: one line each.
-pub const REGISTRY: &[&dyn Study] = &[&piston::Piston, &pressure::Pressure, &expansion::Expansion];
+pub const REGISTRY: &[&dyn Study] = &[
+    &piston::Piston,
+    &pressure::Pressure,
+    &expansion::Expansion,
+    &mixing::Mixing,
+];
 
 /// A finished run as a study sees it: its descriptor, the scene as built
 /// (in its dimension) and what the run measured.

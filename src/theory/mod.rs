@@ -5,6 +5,7 @@ pub mod disk_virial;
 pub mod expansion;
 pub mod henderson;
 pub mod kolafa_labik_malijevsky;
+pub mod mixing;
 pub mod piston;
 pub mod piston_equilibrium;
 pub mod piston_exchange;

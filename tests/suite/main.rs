@@ -12,6 +12,7 @@ mod engine_save;
 mod engine_thermal_walls;
 mod expansion_study;
 mod layers;
+mod mixing_study;
 mod movie;
 mod parquet_schema;
 mod piston_2d;

@@ -1,0 +1,98 @@
+//! The mixing-time analysis (MacKay's Bonkers; Imperial "Mixing"). In 1D:
+//! rods between walls, all the energy started in one rod; how long until it
+//! is shared as equilibrium shares it, against the gas's mass spread, its
+//! size and the hot rod's mass, and which runs never get there. In 2D: two
+//! species started in the two halves of a box; how long until each fills
+//! both, against the time diffusion predicts from the measured
+//! self-diffusion coefficient. docs/mixing.md defines both.
+
+mod disks;
+mod measure;
+mod rods;
+mod section;
+mod section_disks;
+mod section_rods;
+
+use super::{Finished, Start, Study};
+use crate::model::descriptor::Descriptor;
+use crate::model::need::Need;
+use crate::model::report::ReportSection;
+use crate::model::run_output::RunOutput;
+use crate::model::run_spec::RunSpec;
+pub use disks::diffusion;
+pub use measure::{first_passage, late_mean, line};
+
+/// The series every run records for it.
+pub const SERIES: &[&str] = &[
+    "energy_concentration",
+    "energy_share",
+    "energy_autocorrelation",
+    "side_counts",
+    "mean_squared_displacement",
+];
+
+/// Every result `per_run` adds (1D and 2D runs add their own subsets).
+pub const RESULTS: &[&str] = &[
+    "particles",
+    "mixed",
+    "mixing_time",
+    "mass_spread",
+    "hot_mass_ratio",
+    "mixing_collisions",
+    "collision_rate",
+    "late_concentration_ratio",
+    "concentration_change",
+    "hot_share_ratio",
+    "packing_fraction",
+    "mass_ratio",
+    "knudsen",
+    "late_left_fraction",
+    "diffusion",
+    "diffusion_enskog",
+    "diffusion_ratio",
+    "memory_ratio",
+];
+
+/// The mixing study as a plug-in.
+pub struct Mixing;
+
+impl Study for Mixing {
+    fn name(&self) -> &'static str {
+        "mixing"
+    }
+    fn about(&self) -> &'static str {
+        "mixing time: in 1D the energy of one hot rod spreading to equipartition (equal masses never mix), against mass spread, N and the hot rod's mass; in 2D two species started apart, against density and mass ratio, beside diffusion from the measured self-diffusion coefficient and Enskog"
+    }
+    fn needs(&self) -> &'static [Need] {
+        // Walls too, except for the periodic boxes that measure D (2D):
+        // rods check theirs in `per_run`.
+        &[Need::Sampling]
+    }
+    fn series(&self) -> &'static [&'static str] {
+        SERIES
+    }
+    fn results(&self) -> &'static [&'static str] {
+        RESULTS
+    }
+    fn per_run(&self, run: &Finished, out: &mut RunOutput) -> Result<(), String> {
+        match run.start {
+            Start::Rods(b) => rods::per_run(run.descriptor, b, out),
+            Start::Disks(b) => disks::per_run(run.descriptor, b, run.context.species, out),
+            Start::Spheres(_) => Err("the mixing analysis is for rods (1D) and disks (2D)".into()),
+        }
+    }
+    fn theory(&self, _: &Descriptor, result: &str) -> Option<f64> {
+        match result {
+            "late_concentration_ratio" | "hot_share_ratio" => Some(1.0),
+            "late_left_fraction" => Some(0.5),
+            _ => None,
+        }
+    }
+    fn section(
+        &self,
+        _: &Descriptor,
+        runs: &[(RunSpec, RunOutput)],
+    ) -> anyhow::Result<ReportSection> {
+        section::section(runs)
+    }
+}
