@@ -3,15 +3,21 @@
 //! its file in this folder (a type implementing `Observable`) and its line
 //! here.
 
+use super::density_x::DensityX;
 use super::entry::{Entry, Kind, Observable, Part, Setup};
 use super::gas_energy_by_side::GasEnergyBySide;
 use super::kinetic_energy::KineticEnergy;
 use super::kinetic_energy_by_species::KineticEnergyBySpecies;
 use super::left_fraction::LeftFraction;
+use super::pair_distance::PairDistance;
 use super::piston_position::PistonPosition;
+use super::position_x_each::PositionXEach;
 use super::positions::Positions;
+use super::scaled_speed::ScaledSpeed;
 use super::scaled_velocity_x::ScaledVelocityX;
 use super::temperature::{MeanTemperature, Temperature};
+use super::velocity_x_each::VelocityXEach;
+use super::velocity_x_halves::VelocityXHalves;
 use super::virial_pressure::VirialPressure;
 use super::wall_heat::WallHeat;
 use super::wall_pressure::WallPressure;
@@ -48,6 +54,12 @@ catalogue![
     MeanTemperature,
     WallHeat,
     ScaledVelocityX,
+    VelocityXEach,
+    VelocityXHalves,
+    PositionXEach,
+    ScaledSpeed,
+    DensityX,
+    PairDistance,
 ];
 
 /// The entry a descriptor means by `name` under `[observe] <kind>`.

@@ -3,22 +3,30 @@
 //! on the observers that use it, so an observable nobody asked for costs
 //! nothing per event; the sampled ones share one sampling pass.
 
+mod blocks;
 pub mod catalogue;
 mod entry;
 mod histogram;
+mod per_particle;
 mod sampled;
 mod set;
 #[cfg(test)]
 mod tests;
 
+mod density_x;
 mod gas_energy_by_side;
 mod kinetic_energy;
 mod kinetic_energy_by_species;
 mod left_fraction;
+mod pair_distance;
 mod piston_position;
+mod position_x_each;
 mod positions;
+mod scaled_speed;
 mod scaled_velocity_x;
 mod temperature;
+mod velocity_x_each;
+mod velocity_x_halves;
 mod virial_pressure;
 mod wall_heat;
 mod wall_pressure;
