@@ -12,9 +12,9 @@ pub struct DensityX {
     counts: Vec<f64>,
 }
 
-/// Bins over the box: 200 resolve the layering (about σ/4 apart at
-/// contact) in boxes up to ~50σ.
-const BINS: usize = 200;
+/// Bin width in σ, about: fine enough to resolve the layers at a wall
+/// and to extrapolate the density to contact.
+const WIDTH: f64 = 0.02;
 
 impl Observable for DensityX {
     const ENTRY: Entry = Entry {
@@ -24,25 +24,29 @@ impl Observable for DensityX {
         label: "x (all particles)",
         unit: "σ",
         needs: &[Need::Sampling],
-        doc: "x of every movable particle at every sample, 200 bins over the box [0, L): the density profile along x",
+        doc: "x of every movable particle at every sample, in bins of about 0.02σ over the box [0, L): the density profile along x",
     };
     fn part<const D: usize>(_: &Setup) -> Part<D> {
         Part::Observer(Box::new(DensityX {
             length: f64::NAN,
-            counts: vec![0.0; BINS],
+            counts: Vec::new(),
         }))
     }
 }
 
 impl<const D: usize> Observer<D> for DensityX {
     fn sample(&mut self, s: &Snapshot<D>) {
-        self.length = s.sim_box.size[0];
+        if self.counts.is_empty() {
+            self.length = s.sim_box.size[0];
+            self.counts = vec![0.0; (self.length / WIDTH).round().max(1.0) as usize];
+        }
+        let bins = self.counts.len() as f64;
         for (i, p) in s.particles.iter().enumerate() {
             if p.is_immovable() || p.is_plane() {
                 continue;
             }
-            let b = (s.position(i)[0] / self.length * BINS as f64).floor();
-            if (0.0..BINS as f64).contains(&b) {
+            let b = (s.position(i)[0] / self.length * bins).floor();
+            if (0.0..bins).contains(&b) {
                 self.counts[b as usize] += 1.0;
             }
         }
@@ -54,11 +58,12 @@ impl<const D: usize> Measure<D> for DensityX {
         true
     }
     fn finish(self: Box<Self>, _ctx: &Context, out: &mut RunOutput) {
-        let w = self.length / BINS as f64;
+        let bins = self.counts.len();
+        let w = self.length / bins as f64;
         out.histograms.push(Histogram {
             observable: "density_x".into(),
-            lo: (0..BINS).map(|b| b as f64 * w).collect(),
-            hi: (0..BINS).map(|b| (b + 1) as f64 * w).collect(),
+            lo: (0..bins).map(|b| b as f64 * w).collect(),
+            hi: (0..bins).map(|b| (b + 1) as f64 * w).collect(),
             count: self.counts,
         });
     }
