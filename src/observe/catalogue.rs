@@ -15,7 +15,9 @@ use super::position_x_each::PositionXEach;
 use super::positions::Positions;
 use super::scaled_speed::ScaledSpeed;
 use super::scaled_velocity_x::ScaledVelocityX;
+use super::speed_spread::SpeedSpread;
 use super::temperature::{MeanTemperature, Temperature};
+use super::velocities::Velocities;
 use super::velocity_x_each::VelocityXEach;
 use super::velocity_x_halves::VelocityXHalves;
 use super::virial_pressure::VirialPressure;
@@ -48,6 +50,8 @@ catalogue![
     PistonPosition,
     GasEnergyBySide,
     Positions,
+    Velocities,
+    SpeedSpread,
     LeftFraction,
     WallPressure,
     VirialPressure,

@@ -204,7 +204,7 @@ pub fn std_against_mass(title: &str, runs: &Runs) -> Option<ChartSpec> {
     Some(ChartSpec {
         title: title.into(),
         x_label: "mass m".into(),
-        y_label: "std of vₓ [√(kT/m) at m = 1]".into(),
+        y_label: "std of vₓ".into(),
         x_log: true,
         y_log: true,
         layers: vec![
@@ -401,4 +401,92 @@ pub fn radial(title: &str, runs: &Runs, reach: f64) -> Option<ChartSpec> {
             )),
         }],
     })
+}
+
+/// MacKay's scatter plots, from the first replica's stored samples: each
+/// (x series, y series, label) a set of markers.
+pub fn scatter(
+    title: &str,
+    runs: &Runs,
+    sets: &[(String, String, String)],
+    axes: (&str, &str),
+) -> Option<ChartSpec> {
+    let out = runs.first()?.1;
+    let mut layers = Vec::new();
+    for (k, (x, y, label)) in sets.iter().enumerate() {
+        let (x, y) = (out.series(x)?, out.series(y)?);
+        layers.push(Layer::Markers {
+            points: x
+                .value
+                .iter()
+                .copied()
+                .zip(y.value.iter().copied())
+                .collect(),
+            paint: colour(k).faded(0.5),
+            label: Some(label.clone()),
+        });
+    }
+    Some(ChartSpec {
+        title: title.into(),
+        x_label: axes.0.into(),
+        y_label: axes.1.into(),
+        x_log: false,
+        y_log: false,
+        layers,
+    })
+}
+
+/// The mean over replicas of a series at each sample (runs of a group
+/// share their sample times), with its standard error.
+pub fn mean_series(runs: &Runs, name: &str) -> Option<(Vec<f64>, Vec<Stats>)> {
+    let series: Vec<_> = runs.iter().filter_map(|(_, o)| o.series(name)).collect();
+    let first = series.first()?;
+    let len = series.iter().map(|s| s.value.len()).min()?;
+    let stats = (0..len)
+        .map(|i| Stats::of(&series.iter().map(|s| s.value[i]).collect::<Vec<f64>>()))
+        .collect();
+    Some((first.t[..len].to_vec(), stats))
+}
+
+/// A series' mean over replicas with a ±1 standard error band, and a
+/// reference level.
+pub fn settling(
+    title: &str,
+    t: &[f64],
+    mean: &[Stats],
+    y_label: &str,
+    reference: Option<(f64, &str)>,
+) -> ChartSpec {
+    let mut layers = vec![
+        Layer::Band {
+            x: t.to_vec(),
+            lower: mean.iter().map(|s| s.mean - s.stderr).collect(),
+            upper: mean.iter().map(|s| s.mean + s.stderr).collect(),
+            paint: colour(0).faded(0.3),
+        },
+        Layer::Line {
+            points: t.iter().zip(mean).map(|(t, s)| (*t, s.mean)).collect(),
+            paint: colour(0),
+            width: 2,
+            dashed: false,
+            label: Some("mean over replicas (band: ± standard error)".into()),
+        },
+    ];
+    if let (Some((level, label)), Some(t0), Some(t1)) = (reference, t.first(), t.last()) {
+        layers.push(Layer::Line {
+            points: vec![(*t0, level), (*t1, level)],
+            paint: colour(6),
+            width: 2,
+            dashed: true,
+            label: Some(label.into()),
+        });
+    }
+    ChartSpec {
+        title: title.into(),
+        x_label: "time t".into(),
+        y_label: y_label.into(),
+        x_log: false,
+        y_log: false,
+        layers,
+    }
 }

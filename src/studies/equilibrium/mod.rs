@@ -7,10 +7,12 @@
 //! g(r) at contact beside the measured pressure.
 
 mod charts;
+mod dimple;
 mod ensemble;
 mod measure;
 mod moments;
 mod section;
+mod settling;
 mod tests_of;
 
 use super::{Finished, Start, Study};

@@ -3,7 +3,9 @@
 
 use super::RESULTS;
 use super::charts::{self, Runs};
+use super::dimple::{self, central_share, has_dimple, independent_samples};
 use super::ensemble::Ensemble;
+use super::settling;
 use super::tests_of::{Tests, tests_of};
 use crate::model::chart::ChartSpec;
 use crate::model::report::{Figure, ReportSection};
@@ -96,6 +98,8 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
     let mut fluid_rows = String::new();
     let mut per_particle = String::new();
     let mut dimple = String::new();
+    let mut dimple_rows = String::new();
+    let mut settling_rows = String::new();
     let mut pictures = String::new();
     for g in groups(runs) {
         let view: Vec<(&Ensemble, &RunOutput)> = g.runs.iter().map(|(e, o)| (e, *o)).collect();
@@ -154,6 +158,61 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
                     g.label
                 ),
             );
+            let ranked = e.by_rank();
+            let name = |kind: &str, rank: usize| format!("{kind}.{}", ranked[rank].index);
+            let last = ranked.len() - 1;
+            add(
+                "scatter_x",
+                charts::scatter(
+                    &format!(
+                        "{}: positions of particles 1 and 2, {} and {}",
+                        g.label,
+                        last,
+                        last + 1
+                    ),
+                    &view,
+                    &[
+                        (name("x", 0), name("x", 1), "x₁, x₂".into()),
+                        (
+                            name("x", last - 1),
+                            name("x", last),
+                            format!("x{}, x{}", last, last + 1),
+                        ),
+                    ],
+                    ("x of the left one [σ]", "x of the right one [σ]"),
+                ),
+                format!(
+                    "{}: MacKay's scatter plot of the positions of particles 1 and 2 and of the last two, one replica's samples.",
+                    g.label
+                ),
+            );
+            add(
+                "scatter_v",
+                charts::scatter(
+                    &format!("{}: v₁ against v₂", g.label),
+                    &view,
+                    &[(name("v", 0), name("v", 1), "(v₁, v₂)".into())],
+                    ("v₁", "v₂"),
+                ),
+                format!(
+                    "{}: v₁ against v₂, one replica's samples: independent but for the shared energy.",
+                    g.label
+                ),
+            );
+            add(
+                "scatter_xv",
+                charts::scatter(
+                    &format!("{}: x₁ against v₁", g.label),
+                    &view,
+                    &[(name("x", 0), name("v", 0), "(x₁, v₁)".into())],
+                    ("x₁ [σ]", "v₁"),
+                ),
+                format!(
+                    "{}: particle 1's position against its velocity, one replica's samples: independent.",
+                    g.label
+                ),
+            );
+            dimples(&g.label, &view, &t, &mut dimple_rows);
             if let Some(p) = t
                 .particles
                 .iter()
@@ -182,6 +241,62 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
                     ),
                 );
                 dimple_text(&g.label, p, &view, &mut dimple);
+            }
+        }
+        if e.dimension > 1
+            && let Some((time, mean)) = charts::mean_series(&view, "speed_std")
+        {
+            let kt = view.iter().map(|(e, _)| e.kt().sqrt()).sum::<f64>() / view.len() as f64;
+            let reference = settling::maxwell_speed_std(e.dimension) * kt;
+            let (level, tau) = settling::equilibration(&time, &mean);
+            let duration = time.last().copied().unwrap_or(f64::NAN);
+            let collisions =
+                view.iter().map(|(_, o)| o.collisions as f64).sum::<f64>() / view.len() as f64;
+            let cpu: f64 = view.iter().map(|(_, o)| o.cpu_seconds).sum();
+            let _ = writeln!(
+                settling_rows,
+                "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} s |",
+                g.label,
+                e.balls.len(),
+                num(e.packing()),
+                view.len(),
+                num(mean[0].mean),
+                num(level),
+                num(reference),
+                num(tau),
+                num(collisions * tau / duration / e.balls.len() as f64),
+                num(cpu),
+            );
+            add(
+                "speed_std",
+                Some(charts::settling(
+                    &format!("{}: std of the speeds", g.label),
+                    &time,
+                    &mean,
+                    "std of the speeds",
+                    Some((reference, "Maxwell-Boltzmann: √((2 − π/2) kT/m) in 2D")),
+                )),
+                format!(
+                    "{}: the standard deviation of the speeds against time from uniform momenta, mean over {} replicas, beside its Maxwell-Boltzmann value.",
+                    g.label,
+                    view.len()
+                ),
+            );
+            if let Some((time, energy)) = charts::mean_series(&view, "kinetic_energy") {
+                add(
+                    "energy",
+                    Some(charts::settling(
+                        &format!("{}: total energy", g.label),
+                        &time,
+                        &energy,
+                        "total kinetic energy",
+                        None,
+                    )),
+                    format!(
+                        "{}: the total energy against time (conserved to round-off).",
+                        g.label
+                    ),
+                );
             }
         } else if e.dimension > 1 {
             fluid(&g, &view, &t, &mut fluid_rows);
@@ -222,13 +337,21 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
         md.push('\n');
         md.push_str(&per_particle);
     }
-    if !dimple.is_empty() {
+    if !dimple.is_empty() || !dimple_rows.is_empty() {
         md.push_str("### The dimple in P(v₁)\n\n");
         md.push_str(&dimple);
+        md.push_str(DIMPLE_HEAD);
+        md.push_str(&dimple_rows);
+        md.push('\n');
     }
     if !fluid_rows.is_empty() {
         md.push_str(FLUID_HEAD);
         md.push_str(&fluid_rows);
+        md.push('\n');
+    }
+    if !settling_rows.is_empty() {
+        md.push_str(SETTLING_HEAD);
+        md.push_str(&settling_rows);
         md.push('\n');
     }
     md.push_str("### Figures\n\n");
@@ -313,6 +436,55 @@ fn rods(g: &Group, view: &Runs, t: &Tests, rows: &mut String, per: &mut String) 
     per.push('\n');
 }
 
+/// How often particle 1's histogram shows a dimple over the replicas, and
+/// how often independent draws from the exact law would, as many.
+fn dimples(label: &str, view: &Runs, t: &Tests, rows: &mut String) {
+    let Some(p) = t.particles.iter().find(|p| p.rank == 0) else {
+        return;
+    };
+    let hists: Vec<&crate::model::run_output::Histogram> = (view.iter())
+        .filter_map(|(_, o)| {
+            o.histograms
+                .iter()
+                .find(|h| h.observable == format!("velocity_x.{}", p.index))
+        })
+        .collect();
+    let Some(first) = hists.first() else { return };
+    let samples = first.count.iter().sum::<f64>();
+    let seen = hists.iter().filter(|h| has_dimple(&h.count)).count();
+    let dof = view[0].0.dof;
+    // The bins span ±min(reach, 6 std) (velocity_x_each), in reach units.
+    let half = (6.0 / dof.sqrt()).min(1.0);
+    let chance = |n: f64| {
+        if n.is_finite() && (1.0..=MONTE_CARLO_SAMPLES).contains(&n) {
+            num(dimple::chance(
+                dof as usize,
+                half,
+                n.round() as usize,
+                DIMPLE_TRIALS,
+                12,
+            ))
+        } else {
+            "–".into()
+        }
+    };
+    let shares: Vec<f64> = hists.iter().map(|h| central_share(&h.count)).collect();
+    let independent = independent_samples(&shares);
+    let _ = writeln!(
+        rows,
+        "| {label} | {} | {seen} of {} | {} | {} | {} |",
+        num(samples),
+        hists.len(),
+        chance(samples),
+        num(independent),
+        chance(independent)
+    );
+}
+
+/// Independent draws are simulated up to this many samples per run.
+const MONTE_CARLO_SAMPLES: f64 = 2000.0;
+const DIMPLE_TRIALS: usize = 1000;
+
 fn dimple_text(label: &str, p: &super::tests_of::Particle, view: &Runs, out: &mut String) {
     let e = view[0].0;
     let k = -6.0 / (e.dof + 2.0);
@@ -321,10 +493,12 @@ fn dimple_text(label: &str, p: &super::tests_of::Particle, view: &Runs, out: &mu
         "{label}: particle 1 (mass {}) against the exact finite-N law: {} (z = {}); against the Gaussian: {} (z = {}); \
          its first against its second half: {} (z = {}). The exact law for f = {} free degrees of freedom is \
          (1 − (v − V)²/a²)^{} on |v − V| < a: flatter on top than the Gaussian of the same width (excess kurtosis {}) \
-         and bounded, but with its maximum at v = V and no dimple. So a dimple is neither the finite-N law nor, when \
-         the halves agree, slow mixing: MacKay's 400 samples give a bin near the peak a relative error of a few \
-         percent to ten percent and more (fewer independent samples still, when consecutive samples are correlated), \
-         and such a dip is noise. Where the halves disagree beyond {REJECT} standard deviations, the run had not mixed.\n",
+         and bounded, but with its maximum at v = V and no dimple: N = 10 is not too small for equilibrium, \
+         the finite-N law is just not the Gaussian. A dimple is a fluctuation of a histogram of too few independent \
+         samples, and how few a run holds is set by how slowly it mixes: the table below counts dimples over the \
+         replicas, measures how many independent samples each run is worth, and sets both beside the chance of a \
+         dimple in as many independent draws from the exact law. Halves that disagree beyond {REJECT} standard \
+         deviations would mean a run that had not reached equilibrium at all.\n",
         num(p.mass),
         verdict(&p.exact),
         p.exact.map_or("–".into(), |a| num(a.z)),
@@ -399,6 +573,23 @@ replicas: z is the distance of the chi-square-like sum from its expectation in i
 const ROD_HEAD: &str = "### Rods: velocities and positions\n\n\
 | scene | N | f | runs | masses (lightest – heaviest) | std ratio light/heavy | √(mass ratio) | exact ratio | excess kurtosis of the lightest (exact) | largest z vs exact (any particle) | smallest z vs Gaussian | z positions vs order statistics | largest z early vs late | cost |\n\
 |---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+
+const DIMPLE_HEAD: &str = "Counted: particle 1's histogram regrouped into 20 equal bins, and a dimple when the \
+two central bins hold fewer counts than the pair beside them on each side. Beside the replicas, the chance that \
+as many independent draws from the exact law show one (Monte Carlo, 1000 trials; consecutive samples of a run are \
+correlated, so a run holds fewer independent samples than it has, and shows dimples more often).\n\n\
+How many independent samples a run is worth follows from the replicas' spread of particle 1's share in the two \
+central bins: the binomial variance p(1 − p)/n solved for n.\n\n\
+| scene | samples per run | replicas with a dimple | chance for as many independent draws | independent samples per run | chance for that many |\n|---|---|---|---|---|---|\n";
+
+const SETTLING_HEAD: &str = "### Equilibration (Imperial: \"plot the evolution of the standard deviation of the particle \
+speeds as a function of time, and see if you have reached equilibrium\")\n\n\
+Started with each momentum component uniform in [−p, p], the speeds relax to their equilibrium law. The \
+equilibration time is the first time the ensemble mean of the speeds' std comes within 1/e of its start's \
+distance from the settled level (the mean over the last half of the run); its cost is the collisions per \
+particle until then.\n\n\
+| scene | N | φ | runs | std of speeds at the start | settled | Maxwell-Boltzmann | equilibration time | collisions per particle to equilibrate | CPU |\n\
+|---|---|---|---|---|---|---|---|---|---|\n";
 
 const FLUID_HEAD: &str = "### Disks: velocities, speeds, structure and pressure\n\n\
 | point | N | φ | boundary | runs | kT = 2E/f | z vₓ vs exact | z vₓ vs Gaussian | z speed vs exact | z speed vs Maxwell-Boltzmann | g(σ) | Z from g(σ): 1 + 2φ(N−1)/N g(σ) | Z from the virial | n(wall) kT / P (contact theorem: 1) | CPU |\n\
