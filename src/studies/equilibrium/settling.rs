@@ -51,7 +51,7 @@ mod tests {
 
     #[test]
     fn exponential_approach_is_timed() {
-        let t: Vec<f64> = (0..400).map(|i| i as f64 * 0.1).collect();
+        let t: Vec<f64> = (0..1000).map(|i| i as f64 * 0.1).collect();
         let mean: Vec<Stats> = t
             .iter()
             .map(|t| Stats::of(&[1.0 + 0.5 * (-t / 2.0f64).exp()]))
