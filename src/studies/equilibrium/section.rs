@@ -74,7 +74,7 @@ fn describe(e: &Ensemble) -> String {
 /// "z (per bin)" of an agreement, or "–".
 pub fn z_text(a: &Option<Agreement>) -> String {
     match a {
-        Some(a) => format!("{} ({} bins)", num(a.z), a.bins),
+        Some(a) => format!("{} (p {}, {} bins)", num(a.z), num(a.p), a.bins),
         None => "–".into(),
     }
 }
@@ -567,8 +567,8 @@ but whose excess kurtosis is −6/(f + 2). Positions are independent of the velo
 allowed configurations whatever the masses; rods keep their order, so the k-th from the left is the k-th order \
 statistic of N uniform points in the free length (docs/equilibrium.md derives both). Each histogram below is \
 tested against its exact law and its large-N limit, with the errors of each bin from the spread over the \
-replicas: z is the distance of the chi-square-like sum from its expectation in its standard deviations, so \
-|z| < 4 means agreement.\n\n";
+replicas: z is the distance of a chi-square-like sum from its null distribution (found by flipping the signs of \
+whole replicas) in that distribution's standard deviations, so |z| < 4 means agreement.\n\n";
 
 const ROD_HEAD: &str = "### Rods: velocities and positions\n\n\
 | scene | N | f | runs | masses (lightest – heaviest) | std ratio light/heavy | √(mass ratio) | exact ratio | excess kurtosis of the lightest (exact) | largest z vs exact (any particle) | smallest z vs Gaussian | z positions vs order statistics | largest z early vs late | cost |\n\
@@ -607,11 +607,15 @@ with Sheppard's correction for the bin width; `kurtosis_*` its excess kurtosis, 
 −6/(f + 2), Gaussian: 0). `std_ratio_exact` is the exact laws' ratio, √(mass ratio) with walls.\n\n\
 **Tests** (z columns): for each replica, the fraction of its samples in each bin less the probability its own \
 exact law (or the limit law) gives the bin (masses are drawn per run, so each replica has its own law); bins \
-where the law expects at least 20 counts per replica. The mean deviation of each bin over R replicas over its \
-standard error is Student's t with R − 1 degrees of freedom if the law holds; the sum of their squares has mean \
-B(R − 1)/(R − 3) over B bins and a known variance, and z is its distance from that mean in standard \
-deviations. Replica errors need no model of how correlated consecutive samples are. Early against late: the \
-same with each replica's first-half fractions less its second-half fractions.\n\n\
+where the law expects at least 20 counts per replica. S is the sum over the bins of (mean deviation over its \
+standard error over the replicas)². If the law holds, replicas are independent and each replica's deviations are \
+as likely as their negatives, so S recomputed with every replica's deviations times a random sign (1000 seeded \
+patterns) is a draw from S's null distribution, with the correlations between bins kept: a slow collective mode \
+(the light and heavy rods trading energy, the rods' positions breathing together) moves many bins of a run \
+together, and a variance that took bins as independent would be several times too small. z is S's distance from \
+the flipped mean in flipped standard deviations (p: the share of flips at least as large). Neither the time \
+correlation of a run's samples nor that between bins needs a model. Early against late: the same with each \
+replica's first-half fractions less its second-half fractions.\n\n\
 **g(r)** (`g_contact`): pairs per sample over N(N − 1)/2 times the shell's area over the box's (the finite-N \
 normalisation: each particle has N − 1 partners), nearest periodic image; its contact value is a quadratic \
 fitted over the first 0.16σ beyond contact, at σ. The pressure of hard disks is Z = βP/n = 1 + 2φ g(σ) \
