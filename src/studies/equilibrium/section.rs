@@ -99,6 +99,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
     let mut per_particle = String::new();
     let mut dimple = String::new();
     let mut dimple_rows = String::new();
+    let mut dimple_all = Vec::new();
     let mut settling_rows = String::new();
     let mut pictures = String::new();
     for g in groups(runs) {
@@ -212,7 +213,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
                     g.label
                 ),
             );
-            dimples(&g.label, &view, &t, &mut dimple_rows);
+            dimples(&g.label, &view, &t, &mut dimple_rows, &mut dimple_all);
             if let Some(p) = t
                 .particles
                 .iter()
@@ -342,6 +343,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
         md.push_str(&dimple);
         md.push_str(DIMPLE_HEAD);
         md.push_str(&dimple_rows);
+        md.push_str(&dimple_answer(&dimple_all));
         md.push('\n');
     }
     if !fluid_rows.is_empty() {
@@ -438,7 +440,19 @@ fn rods(g: &Group, view: &Runs, t: &Tests, rows: &mut String, per: &mut String) 
 
 /// How often particle 1's histogram shows a dimple over the replicas, and
 /// how often independent draws from the exact law would, as many.
-fn dimples(label: &str, view: &Runs, t: &Tests, rows: &mut String) {
+/// One line of the dimple table, kept for the conclusion.
+struct Dimples {
+    label: String,
+    particles: usize,
+    samples: f64,
+    seen: usize,
+    runs: usize,
+    independent: f64,
+    chance: String,
+    chance_independent: String,
+}
+
+fn dimples(label: &str, view: &Runs, t: &Tests, rows: &mut String, all: &mut Vec<Dimples>) {
     let Some(p) = t.particles.iter().find(|p| p.rank == 0) else {
         return;
     };
@@ -479,6 +493,55 @@ fn dimples(label: &str, view: &Runs, t: &Tests, rows: &mut String) {
         num(independent),
         chance(independent)
     );
+    all.push(Dimples {
+        label: label.into(),
+        particles: view[0].0.balls.len(),
+        samples,
+        seen,
+        runs: hists.len(),
+        independent,
+        chance: chance(samples),
+        chance_independent: chance(independent),
+    });
+}
+
+/// What the dimple table says: the shortest runs against the longest of
+/// as many particles (the first such, in table order).
+fn dimple_answer(all: &[Dimples]) -> String {
+    let Some(few) = all.iter().min_by(|a, b| a.samples.total_cmp(&b.samples)) else {
+        return String::new();
+    };
+    let same = all.iter().filter(|d| d.particles == few.particles);
+    let Some(many) = same.fold(None, |best: Option<&Dimples>, d| match best {
+        Some(b) if b.samples >= d.samples => Some(b),
+        _ => Some(d),
+    }) else {
+        return String::new();
+    };
+    if few.samples == many.samples {
+        return String::new();
+    }
+    format!(
+        "\nSo: with {} samples per run ({}), {} of {} replicas show a dimple in P(v₁). Those runs are worth about {} \
+         independent samples (consecutive samples are correlated: the rods mix slowly), for which the exact law \
+         shows a dimple with chance {}; {} truly independent samples would show one with chance {}. With {} samples \
+         per run ({}, worth about {} independent ones) {} of {} do. MacKay's dimple is neither the finite-N law nor \
+         a failure to reach equilibrium: it is the noise of a histogram of few independent samples, made likelier \
+         by slow mixing.\n",
+        num(few.samples),
+        few.label,
+        few.seen,
+        few.runs,
+        num(few.independent),
+        few.chance_independent,
+        num(few.samples),
+        few.chance,
+        num(many.samples),
+        many.label,
+        num(many.independent),
+        many.seen,
+        many.runs,
+    )
 }
 
 /// Independent draws are simulated up to this many samples per run.
@@ -493,7 +556,7 @@ fn dimple_text(label: &str, p: &super::tests_of::Particle, view: &Runs, out: &mu
         "{label}: particle 1 (mass {}) against the exact finite-N law: {} (z = {}); against the Gaussian: {} (z = {}); \
          its first against its second half: {} (z = {}). The exact law for f = {} free degrees of freedom is \
          (1 − (v − V)²/a²)^{} on |v − V| < a: flatter on top than the Gaussian of the same width (excess kurtosis {}) \
-         and bounded, but with its maximum at v = V and no dimple: N = 10 is not too small for equilibrium, \
+         and bounded, but with its maximum at v = V and no dimple: N = {} is not too small for equilibrium, \
          the finite-N law is just not the Gaussian. A dimple is a fluctuation of a histogram of too few independent \
          samples, and how few a run holds is set by how slowly it mixes: the table below counts dimples over the \
          replicas, measures how many independent samples each run is worth, and sets both beside the chance of a \
@@ -509,6 +572,7 @@ fn dimple_text(label: &str, p: &super::tests_of::Particle, view: &Runs, out: &mu
         e.dof,
         num(0.5 * (e.dof - 3.0)),
         num(k),
+        e.balls.len(),
     );
 }
 
