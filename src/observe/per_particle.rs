@@ -122,3 +122,61 @@ pub fn velocity_range<const D: usize>(s: &Snapshot<D>, i: usize) -> Option<(f64,
     let w = reach.min(6.0 * (kt * p.inv_mass).sqrt());
     (w > 0.0).then_some((-w, w))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::engine::{Particle, SimBox};
+
+    /// Two rods of masses 1 and 4 with energy 1/2 + 2 = 5/2: their reaches
+    /// are sqrt(5) and sqrt(5/4); each sample lands in its own particle's bin.
+    #[test]
+    fn each_particle_has_its_own_reach_and_counts() {
+        let particles = vec![
+            Particle::<1>::new([1.0], [1.0], 1.0, 0.0),
+            Particle::<1>::new([3.0], [-1.0], 4.0, 0.0),
+        ];
+        let sim_box = SimBox::hard([4.0]);
+        let s = Snapshot {
+            time: 0.0,
+            now: 0.0,
+            particles: &particles,
+            sim_box: &sim_box,
+        };
+        let mut h = Box::new(PerParticle::new(
+            "velocity_x",
+            10,
+            false,
+            velocity_range::<1>,
+            |s, i| s.particles[i].vel[0],
+        ));
+        h.sample(&s);
+        h.sample(&s);
+        let species = ["a".to_string()];
+        let ctx = Context {
+            species: &species,
+            piston: None,
+            duration: 1.0,
+            volume: 4.0,
+            wall_area: 2.0,
+            dimension: 1,
+            degrees_of_freedom: 2.0,
+        };
+        let mut out = RunOutput::default();
+        h.finish(&ctx, &mut out);
+        let names: Vec<&str> = out
+            .histograms
+            .iter()
+            .map(|h| h.observable.as_str())
+            .collect();
+        assert_eq!(names, ["velocity_x.0", "velocity_x.1"]);
+        let (a, b) = (&out.histograms[0], &out.histograms[1]);
+        assert!((a.lo[0] + 5f64.sqrt()).abs() < 1e-12 && (a.hi[9] - 5f64.sqrt()).abs() < 1e-12);
+        assert!((b.hi[9] - 1.25f64.sqrt()).abs() < 1e-12);
+        // v = 1 of reach sqrt(5): bin floor((1 + 2.236)/4.472 * 10) = 7.
+        assert_eq!(a.count[7], 2.0);
+        assert_eq!(a.count.iter().sum::<f64>(), 2.0);
+        // v = -1 of reach sqrt(1.25): bin floor((-1 + 1.118)/2.236 * 10) = 0.
+        assert_eq!(b.count[0], 2.0);
+    }
+}
