@@ -3,6 +3,7 @@
 //! its file in this folder (a type implementing `Observable`) and its line
 //! here.
 
+use super::density_x::DensityX;
 use super::energy_autocorrelation::EnergyAutocorrelation;
 use super::energy_concentration::EnergyConcentration;
 use super::energy_share::EnergyShare;
@@ -12,11 +13,18 @@ use super::kinetic_energy::KineticEnergy;
 use super::kinetic_energy_by_species::KineticEnergyBySpecies;
 use super::left_fraction::LeftFraction;
 use super::mean_squared_displacement::Msd;
+use super::pair_distance::PairDistance;
 use super::piston_position::PistonPosition;
+use super::position_x_each::PositionXEach;
 use super::positions::Positions;
+use super::scaled_speed::ScaledSpeed;
 use super::scaled_velocity_x::ScaledVelocityX;
 use super::side_counts::SideCounts;
+use super::speed_spread::SpeedSpread;
 use super::temperature::{MeanTemperature, Temperature};
+use super::velocities::Velocities;
+use super::velocity_x_each::VelocityXEach;
+use super::velocity_x_halves::VelocityXHalves;
 use super::virial_pressure::VirialPressure;
 use super::wall_heat::WallHeat;
 use super::wall_pressure::WallPressure;
@@ -47,6 +55,8 @@ catalogue![
     PistonPosition,
     GasEnergyBySide,
     Positions,
+    Velocities,
+    SpeedSpread,
     LeftFraction,
     WallPressure,
     VirialPressure,
@@ -58,6 +68,12 @@ catalogue![
     EnergyAutocorrelation,
     SideCounts,
     Msd,
+    VelocityXEach,
+    VelocityXHalves,
+    PositionXEach,
+    ScaledSpeed,
+    DensityX,
+    PairDistance,
 ];
 
 /// The entry a descriptor means by `name` under `[observe] <kind>`.

@@ -3,17 +3,20 @@
 //! on the observers that use it, so an observable nobody asked for costs
 //! nothing per event; the sampled ones share one sampling pass.
 
+mod blocks;
 pub mod catalogue;
 mod entry;
 pub mod film;
 mod histogram;
 mod lags;
+mod per_particle;
 mod sampled;
 mod set;
 pub mod state;
 #[cfg(test)]
 mod tests;
 
+mod density_x;
 mod energy_autocorrelation;
 mod energy_concentration;
 mod energy_share;
@@ -22,11 +25,18 @@ mod kinetic_energy;
 mod kinetic_energy_by_species;
 mod left_fraction;
 mod mean_squared_displacement;
+mod pair_distance;
 mod piston_position;
+mod position_x_each;
 mod positions;
+mod scaled_speed;
 mod scaled_velocity_x;
 mod side_counts;
+mod speed_spread;
 mod temperature;
+mod velocities;
+mod velocity_x_each;
+mod velocity_x_halves;
 mod virial_pressure;
 mod wall_heat;
 mod wall_pressure;

@@ -185,7 +185,8 @@ fn a_histogram_name_builds_that_histogram_and_an_unknown_one_is_an_error() {
     let err = observe::<2>(Kind::Histograms, &["speed"]).unwrap_err();
     assert_eq!(
         err,
-        "unknown histograms observable `speed`; known: scaled_velocity_x"
+        "unknown histograms observable `speed`; known: scaled_velocity_x, velocity_x_each, \
+         velocity_x_halves, position_x_each, scaled_speed, density_x, pair_distance"
     );
     // A name of another kind is not a histogram either.
     assert!(observe::<2>(Kind::Histograms, &["kinetic_energy"]).is_err());

@@ -3,6 +3,7 @@
 //! its results and its report section. Registering one is a line in
 //! `REGISTRY`; a descriptor asks for it as `[analysis.<name>]`.
 
+pub mod equilibrium;
 pub mod expansion;
 pub mod mixing;
 pub mod options;
@@ -24,6 +25,7 @@ pub const REGISTRY: &[&dyn Study] = &[
     &pressure::Pressure,
     &expansion::Expansion,
     &mixing::Mixing,
+    &equilibrium::Equilibrium,
 ];
 
 /// A finished run as a study sees it: its descriptor, the scene as built

@@ -10,6 +10,7 @@ mod engine_hard_cases;
 mod engine_neighbour_lists;
 mod engine_save;
 mod engine_thermal_walls;
+mod equilibrium_study;
 mod expansion_study;
 mod layers;
 mod mixing_study;

@@ -1,0 +1,492 @@
+//! The section's charts, as data: pooled histograms (mean over replicas
+//! with ±1 standard error bars) beside the laws drawn as curves.
+
+use super::ensemble::Ensemble;
+use super::measure::{profile, radial_distribution};
+use super::moments;
+use crate::model::chart::{ChartSpec, Layer, colour};
+use crate::model::run_output::{Histogram, RunOutput};
+use crate::stats::replicas::fractions;
+use crate::stats::summary::Stats;
+use crate::theory::maxwell::{MaxwellSpeed, normal_pdf};
+
+pub type Runs<'a> = [(&'a Ensemble, &'a RunOutput)];
+
+fn find<'a>(out: &'a RunOutput, name: &str) -> Option<&'a Histogram> {
+    out.histograms.iter().find(|h| h.observable == name)
+}
+
+/// A histogram pooled over replicas as a density in x' = (x - shift) /
+/// unit (each replica its own shift and unit): bin centres (replica 0's),
+/// mean density and its standard error per bin.
+pub struct Pooled {
+    pub x: Vec<f64>,
+    pub density: Vec<Stats>,
+}
+
+pub fn pooled(
+    runs: &Runs,
+    name: &dyn Fn(usize) -> String,
+    scale: &dyn Fn(usize) -> (f64, f64),
+) -> Option<Pooled> {
+    let mut per: Vec<Vec<f64>> = Vec::new();
+    let mut x = Vec::new();
+    for r in 0..runs.len() {
+        let h = find(runs[r].1, &name(r))?;
+        let (shift, unit) = scale(r);
+        let f = fractions(&h.count);
+        if x.is_empty() {
+            x =
+                h.lo.iter()
+                    .zip(&h.hi)
+                    .map(|(a, b)| (0.5 * (a + b) - shift) / unit)
+                    .collect();
+        }
+        per.push(
+            f.iter()
+                .zip(h.lo.iter().zip(&h.hi))
+                .map(|(f, (a, b))| f / ((b - a) / unit))
+                .collect(),
+        );
+    }
+    let density = (0..x.len())
+        .map(|b| Stats::of(&per.iter().map(|p| p[b]).collect::<Vec<f64>>()))
+        .collect();
+    Some(Pooled { x, density })
+}
+
+fn measured(p: &Pooled, i: usize, label: &str) -> Vec<Layer> {
+    vec![
+        Layer::ErrorBars {
+            bars: p
+                .x
+                .iter()
+                .zip(&p.density)
+                .map(|(x, s)| (*x, s.mean - s.stderr, s.mean, s.mean + s.stderr))
+                .collect(),
+            paint: colour(i).faded(0.6),
+        },
+        Layer::Markers {
+            points: p
+                .x
+                .iter()
+                .zip(&p.density)
+                .map(|(x, s)| (*x, s.mean))
+                .collect(),
+            paint: colour(i),
+            label: Some(label.into()),
+        },
+    ]
+}
+
+fn curve(f: &dyn Fn(f64) -> f64, lo: f64, hi: f64, i: usize, dashed: bool, label: &str) -> Layer {
+    Layer::Line {
+        points: (0..=400)
+            .map(|k| lo + (hi - lo) * k as f64 / 400.0)
+            .map(|x| (x, f(x)))
+            .collect(),
+        paint: colour(i),
+        width: 2,
+        dashed,
+        label: Some(label.into()),
+    }
+}
+
+fn range(p: &Pooled) -> (f64, f64) {
+    let w = p.x.get(1).zip(p.x.first()).map_or(0.0, |(b, a)| b - a);
+    (
+        p.x.first().copied().unwrap_or(0.0) - 0.5 * w,
+        p.x.last().copied().unwrap_or(1.0) + 0.5 * w,
+    )
+}
+
+/// v_x of one particle per replica (`index(r)`, its engine index), in
+/// units of its exact law's std about its centre: the exact law (f
+/// degrees of freedom) beside the unit Gaussian. `suffixes` pick the
+/// histograms ("" for the whole run, "_early"/"_late" for halves).
+pub fn velocity(
+    title: &str,
+    runs: &Runs,
+    index: &dyn Fn(usize) -> Option<(usize, f64)>,
+    suffixes: &[(&str, &str)],
+) -> Option<ChartSpec> {
+    let dof = runs.first()?.0.dof;
+    let mut layers = Vec::new();
+    let mut span = (0.0, 0.0);
+    for (k, (suffix, label)) in suffixes.iter().enumerate() {
+        let p = pooled(
+            runs,
+            &|r| {
+                format!(
+                    "velocity_x{suffix}.{}",
+                    index(r).map_or(usize::MAX, |i| i.0)
+                )
+            },
+            &|r| {
+                let m = index(r).map_or(f64::NAN, |i| i.1);
+                let law = runs[r].0.velocity_law(m);
+                (law.centre, law.std())
+            },
+        )?;
+        span = range(&p);
+        layers.extend(measured(&p, k, label));
+    }
+    let law = crate::theory::microcanonical::VelocityMarginal {
+        centre: 0.0,
+        reach: dof.sqrt(),
+        dof,
+    };
+    layers.push(curve(
+        &|u| law.pdf(u),
+        span.0,
+        span.1,
+        6,
+        false,
+        &format!("exact, f = {dof}"),
+    ));
+    layers.push(curve(
+        &|u| normal_pdf(u, 0.0, 1.0),
+        span.0,
+        span.1,
+        6,
+        true,
+        "Gaussian",
+    ));
+    Some(ChartSpec {
+        title: title.into(),
+        x_label: "(vₓ − V) / √(kT/m)  (V, kT/m: the exact law's centre and variance)".into(),
+        y_label: "probability density".into(),
+        x_log: false,
+        y_log: false,
+        layers,
+    })
+}
+
+/// Each particle's velocity std (Gaussian fit, mean over replicas) against
+/// its mass, beside sqrt(kT/m) (exact for any N; with conserved momentum
+/// times sqrt(1 - m/M)).
+pub fn std_against_mass(title: &str, runs: &Runs) -> Option<ChartSpec> {
+    let first = runs.first()?.0;
+    let mut bars = Vec::new();
+    let mut points = Vec::new();
+    let mut theory = Vec::new();
+    for ball in first.by_rank() {
+        let i = ball.index;
+        let stds: Vec<f64> = runs
+            .iter()
+            .filter_map(|(_, o)| find(o, &format!("velocity_x.{i}")))
+            .map(|h| moments::of(h).std)
+            .collect();
+        let masses: Vec<f64> = (runs.iter())
+            .filter_map(|(e, _)| e.balls.iter().find(|b| b.index == i))
+            .map(|b| b.mass)
+            .collect();
+        let exact: Vec<f64> = (runs.iter())
+            .filter_map(|(e, _)| {
+                Some(
+                    e.velocity_law(e.balls.iter().find(|b| b.index == i)?.mass)
+                        .std(),
+                )
+            })
+            .collect();
+        let (s, m, x) = (Stats::of(&stds), Stats::of(&masses), Stats::of(&exact));
+        if s.n == 0 {
+            continue;
+        }
+        bars.push((m.mean, s.mean - s.stderr, s.mean, s.mean + s.stderr));
+        points.push((m.mean, s.mean));
+        theory.push((m.mean, x.mean));
+    }
+    theory.sort_by(|a, b| a.0.total_cmp(&b.0));
+    if points.is_empty() {
+        return None;
+    }
+    Some(ChartSpec {
+        title: title.into(),
+        x_label: "mass m".into(),
+        y_label: "std of vₓ".into(),
+        x_log: true,
+        y_log: true,
+        layers: vec![
+            Layer::Line {
+                points: theory,
+                paint: colour(6),
+                width: 2,
+                dashed: true,
+                label: Some("exact: √(kT/m), kT = 2E/f".into()),
+            },
+            Layer::ErrorBars {
+                bars,
+                paint: colour(0),
+            },
+            Layer::Markers {
+                points,
+                paint: colour(0),
+                label: Some("measured (Gaussian fit, mean ± standard error over replicas)".into()),
+            },
+        ],
+    })
+}
+
+/// Every rod's position histogram (pooled) beside its order-statistics law.
+pub fn positions(title: &str, runs: &Runs) -> Option<ChartSpec> {
+    let laws = runs.first()?.0.rod_laws()?;
+    let mut layers = Vec::new();
+    for (k, (ball, law)) in laws.iter().enumerate() {
+        let p = pooled(runs, &|_| format!("position_x.{}", ball.index), &|_| {
+            (0.0, 1.0)
+        })?;
+        let (lo, hi) = range(&p);
+        layers.push(Layer::Markers {
+            points: p
+                .x
+                .iter()
+                .zip(&p.density)
+                .map(|(x, s)| (*x, s.mean))
+                .collect(),
+            paint: colour(k),
+            label: (k == 0).then(|| "measured (mean over replicas)".into()),
+        });
+        let mut c = curve(
+            &|x| law.pdf(x),
+            lo,
+            hi,
+            k,
+            false,
+            "order statistics (exact)",
+        );
+        if let Layer::Line { label, .. } = &mut c
+            && k > 0
+        {
+            *label = None;
+        }
+        layers.push(c);
+    }
+    Some(ChartSpec {
+        title: title.into(),
+        x_label: "x [σ]".into(),
+        y_label: "probability density of each rod's x".into(),
+        x_log: false,
+        y_log: false,
+        layers,
+    })
+}
+
+/// sqrt(m) v_x of all particles in units of sqrt(kT), beside the Gaussian.
+pub fn scaled_vx(title: &str, runs: &Runs) -> Option<ChartSpec> {
+    let p = pooled(runs, &|_| "scaled_velocity_x".into(), &|r| {
+        (0.0, runs[r].0.kt().sqrt())
+    })?;
+    let (lo, hi) = range(&p);
+    let mut layers = measured(&p, 0, "measured (mean ± standard error over replicas)");
+    layers.push(curve(
+        &|u| normal_pdf(u, 0.0, 1.0),
+        lo,
+        hi,
+        6,
+        true,
+        "Gaussian",
+    ));
+    Some(ChartSpec {
+        title: title.into(),
+        x_label: "√m vₓ / √(kT), kT = 2E/f".into(),
+        y_label: "probability density".into(),
+        x_log: false,
+        y_log: false,
+        layers,
+    })
+}
+
+/// sqrt(m)|v| in units of sqrt(kT), beside Maxwell-Boltzmann and the exact law.
+pub fn speed(title: &str, runs: &Runs) -> Option<ChartSpec> {
+    let e = runs.first()?.0;
+    let p = pooled(runs, &|_| "scaled_speed".into(), &|r| {
+        (0.0, runs[r].0.kt().sqrt())
+    })?;
+    let (_, hi) = range(&p);
+    let mb = MaxwellSpeed {
+        kt: 1.0,
+        dimension: e.dimension as f64,
+    };
+    let kt = e.kt().sqrt();
+    let mass = e.balls.first().map_or(1.0, |b| b.mass);
+    let exact = e.speed_law(mass);
+    let mut layers = measured(&p, 0, "measured (mean ± standard error over replicas)");
+    layers.push(curve(&|u| mb.pdf(u), 0.0, hi, 6, true, "Maxwell-Boltzmann"));
+    layers.push(curve(
+        &|u| exact.pdf(u * kt) * kt,
+        0.0,
+        hi,
+        1,
+        false,
+        "exact, finite N",
+    ));
+    Some(ChartSpec {
+        title: title.into(),
+        x_label: "√m |v| / √(kT), kT = 2E/f".into(),
+        y_label: "probability density".into(),
+        x_log: false,
+        y_log: false,
+        layers,
+    })
+}
+
+/// The density along x over the mean density (mean over replicas).
+pub fn density(title: &str, runs: &Runs) -> Option<ChartSpec> {
+    let e = runs.first()?.0;
+    let hists: Vec<&Histogram> = runs
+        .iter()
+        .filter_map(|(_, o)| find(o, "density_x"))
+        .collect();
+    let first = hists.first()?;
+    let mean_n = e.balls.len() as f64 / e.volume;
+    let per: Vec<Vec<f64>> = hists.iter().map(|h| profile(e, h)).collect();
+    let points: Vec<(f64, f64)> = (0..first.lo.len())
+        .map(|b| {
+            let x = 0.5 * (first.lo[b] + first.hi[b]);
+            (
+                x,
+                per.iter().map(|p| p[b]).sum::<f64>() / per.len() as f64 / mean_n,
+            )
+        })
+        .collect();
+    Some(ChartSpec {
+        title: title.into(),
+        x_label: "x [σ]".into(),
+        y_label: "n(x) / mean n".into(),
+        x_log: false,
+        y_log: false,
+        layers: vec![Layer::Line {
+            points,
+            paint: colour(0),
+            width: 2,
+            dashed: false,
+            label: Some(format!("mean over {} replicas", per.len())),
+        }],
+    })
+}
+
+/// g(r), mean over replicas, up to `reach` σ.
+pub fn radial(title: &str, runs: &Runs, reach: f64) -> Option<ChartSpec> {
+    let e = runs.first()?.0;
+    let hists: Vec<&Histogram> = runs
+        .iter()
+        .filter_map(|(_, o)| find(o, "pair_distance"))
+        .collect();
+    let first = hists.first()?;
+    let per: Vec<Vec<f64>> = hists.iter().map(|h| radial_distribution(e, h)).collect();
+    let points: Vec<(f64, f64)> = (0..first.lo.len())
+        .map(|b| {
+            (
+                0.5 * (first.lo[b] + first.hi[b]),
+                per.iter().map(|p| p[b]).sum::<f64>() / per.len() as f64,
+            )
+        })
+        .take_while(|(x, _)| *x <= reach)
+        .collect();
+    Some(ChartSpec {
+        title: title.into(),
+        x_label: "r [σ]".into(),
+        y_label: "g(r)".into(),
+        x_log: false,
+        y_log: false,
+        layers: vec![Layer::Line {
+            points,
+            paint: colour(0),
+            width: 2,
+            dashed: false,
+            label: Some(format!(
+                "mean over {} replicas (N(N − 1) normalisation)",
+                per.len()
+            )),
+        }],
+    })
+}
+
+/// MacKay's scatter plots, from the first replica's stored samples: each
+/// (x series, y series, label) a set of markers.
+pub fn scatter(
+    title: &str,
+    runs: &Runs,
+    sets: &[(String, String, String)],
+    axes: (&str, &str),
+) -> Option<ChartSpec> {
+    let out = runs.first()?.1;
+    let mut layers = Vec::new();
+    for (k, (x, y, label)) in sets.iter().enumerate() {
+        let (x, y) = (out.series(x)?, out.series(y)?);
+        layers.push(Layer::Markers {
+            points: x
+                .value
+                .iter()
+                .copied()
+                .zip(y.value.iter().copied())
+                .collect(),
+            paint: colour(k).faded(0.5),
+            label: Some(label.clone()),
+        });
+    }
+    Some(ChartSpec {
+        title: title.into(),
+        x_label: axes.0.into(),
+        y_label: axes.1.into(),
+        x_log: false,
+        y_log: false,
+        layers,
+    })
+}
+
+/// The mean over replicas of a series at each sample (runs of a group
+/// share their sample times), with its standard error.
+pub fn mean_series(runs: &Runs, name: &str) -> Option<(Vec<f64>, Vec<Stats>)> {
+    let series: Vec<_> = runs.iter().filter_map(|(_, o)| o.series(name)).collect();
+    let first = series.first()?;
+    let len = series.iter().map(|s| s.value.len()).min()?;
+    let stats = (0..len)
+        .map(|i| Stats::of(&series.iter().map(|s| s.value[i]).collect::<Vec<f64>>()))
+        .collect();
+    Some((first.t[..len].to_vec(), stats))
+}
+
+/// A series' mean over replicas with a ±1 standard error band, and a
+/// reference level.
+pub fn settling(
+    title: &str,
+    t: &[f64],
+    mean: &[Stats],
+    y_label: &str,
+    reference: Option<(f64, &str)>,
+) -> ChartSpec {
+    let mut layers = vec![
+        Layer::Band {
+            x: t.to_vec(),
+            lower: mean.iter().map(|s| s.mean - s.stderr).collect(),
+            upper: mean.iter().map(|s| s.mean + s.stderr).collect(),
+            paint: colour(0).faded(0.3),
+        },
+        Layer::Line {
+            points: t.iter().zip(mean).map(|(t, s)| (*t, s.mean)).collect(),
+            paint: colour(0),
+            width: 2,
+            dashed: false,
+            label: Some("mean over replicas (band: ± standard error)".into()),
+        },
+    ];
+    if let (Some((level, label)), Some(t0), Some(t1)) = (reference, t.first(), t.last()) {
+        layers.push(Layer::Line {
+            points: vec![(*t0, level), (*t1, level)],
+            paint: colour(6),
+            width: 2,
+            dashed: true,
+            label: Some(label.into()),
+        });
+    }
+    ChartSpec {
+        title: title.into(),
+        x_label: "time t".into(),
+        y_label: y_label.into(),
+        x_log: false,
+        y_log: false,
+        layers,
+    }
+}

@@ -1,0 +1,220 @@
+//! What one run adds: for rods, the lightest and heaviest particle's
+//! Gaussian fit and excess kurtosis; for disks and spheres, kT, the
+//! kurtosis of v_x, g at contact beside the pressure, and the density at
+//! a wall beside the wall pressure. Each result is written only when the
+//! run observed what it needs.
+
+use super::ensemble::Ensemble;
+use super::moments;
+use crate::model::run_output::{Histogram, RunOutput};
+use crate::observe::Context;
+
+fn histogram<'a>(out: &'a RunOutput, name: &str) -> Option<&'a Histogram> {
+    out.histograms.iter().find(|h| h.observable == name)
+}
+
+pub fn measure(e: &Ensemble, ctx: &Context, out: &mut RunOutput) {
+    let mut add = Vec::new();
+    add.push(("kT", e.kt()));
+    if let (Some(light), Some(heavy)) = (e.lightest(), e.heaviest()) {
+        let fit = |i: usize| histogram(out, &format!("velocity_x.{i}")).map(moments::of);
+        if let (Some(l), Some(h)) = (fit(light.index), fit(heavy.index)) {
+            let exact = e.velocity_law(light.mass).std() / e.velocity_law(heavy.mass).std();
+            let ratio = l.std / h.std;
+            add.extend([
+                ("lightest_mass", light.mass),
+                ("heaviest_mass", heavy.mass),
+                ("std_lightest", l.std),
+                ("std_heaviest", h.std),
+                ("std_ratio", ratio),
+                ("sqrt_mass_ratio", (heavy.mass / light.mass).sqrt()),
+                ("std_ratio_exact", exact),
+                ("std_ratio_over_exact", ratio / exact),
+                ("kurtosis_lightest", l.excess_kurtosis),
+                ("kurtosis_heaviest", h.excess_kurtosis),
+            ]);
+        }
+    }
+    if let Some(h) = histogram(out, "scaled_velocity_x") {
+        add.push(("kurtosis_vx", moments::of(h).excess_kurtosis));
+    }
+    if let Some(g) = histogram(out, "pair_distance").and_then(|h| contact(e, h)) {
+        let n = e.balls.len() as f64;
+        let z = 1.0 + contact_factor(e.dimension) * e.packing() * (n - 1.0) / n * g;
+        add.extend([
+            ("packing_fraction", e.packing()),
+            ("g_contact", g),
+            ("Z_contact", z),
+        ]);
+        if let Some(p) = out.scalar("virial_pressure") {
+            // The virial's kinetic part is 2K/d = (N - 1) kT when momentum
+            // is conserved; the excess is the collisions' (as the pressure
+            // study takes it).
+            let kinetic = 0.5 * e.dof * e.kt();
+            let zv = 1.0 + (p * ctx.volume - 2.0 * kinetic / e.dimension as f64) / (n * e.kt());
+            add.extend([("Z_virial", zv), ("Z_contact_over_virial", z / zv)]);
+        }
+    }
+    if let (Some(h), Some(p)) = (histogram(out, "density_x"), out.scalar("wall_pressure"))
+        && let Some(n) = wall_density(e, h)
+    {
+        add.extend([
+            ("wall_density", n),
+            ("contact_theorem_ratio", n * e.kt() / p),
+        ]);
+    }
+    out.scalars
+        .extend(add.into_iter().map(|(k, v)| (k.to_string(), v)));
+}
+
+/// Z = 1 + c phi g(sigma): c = 2 for disks, 4 for spheres, 1 for rods.
+pub fn contact_factor(dimension: usize) -> f64 {
+    match dimension {
+        1 => 1.0,
+        2 => 2.0,
+        _ => 4.0,
+    }
+}
+
+/// Volume of the shell between radii a and b in d dimensions.
+pub fn shell(dimension: usize, a: f64, b: f64) -> f64 {
+    match dimension {
+        1 => 2.0 * (b - a),
+        2 => std::f64::consts::PI * (b * b - a * a),
+        _ => 4.0 / 3.0 * std::f64::consts::PI * (b.powi(3) - a.powi(3)),
+    }
+}
+
+/// g(r) at each bin: mean pairs per sample over an ideal gas's N(N-1)/2
+/// shell/V (periodic boxes; finite N).
+pub fn radial_distribution(e: &Ensemble, h: &Histogram) -> Vec<f64> {
+    let n = e.balls.len() as f64;
+    let pairs = 0.5 * n * (n - 1.0);
+    h.lo.iter()
+        .zip(&h.hi)
+        .zip(&h.count)
+        .map(|((a, b), c)| c / (pairs * shell(e.dimension, *a, *b) / e.volume))
+        .collect()
+}
+
+/// Bins a contact value is extrapolated from: 0.16 sigma.
+const CONTACT_BINS: usize = 8;
+
+/// g at contact: a quadratic fitted to g over the first bins at and beyond
+/// sigma, evaluated at sigma. None unless every axis is periodic and the
+/// balls share one diameter.
+pub fn contact(e: &Ensemble, h: &Histogram) -> Option<f64> {
+    let sigma = 2.0 * e.balls.first()?.radius;
+    if !e.periodic.iter().all(|p| *p) || e.balls.iter().any(|b| 2.0 * b.radius != sigma) {
+        return None;
+    }
+    let g = radial_distribution(e, h);
+    let points: Vec<(f64, f64)> = (h.lo.iter().zip(&h.hi).zip(&g))
+        .filter(|((a, _), _)| **a >= sigma - 1e-9)
+        .take(CONTACT_BINS)
+        .map(|((a, b), g)| (0.5 * (a + b) - sigma, *g))
+        .collect();
+    (points.len() == CONTACT_BINS).then(|| quadratic_at_zero(&points))
+}
+
+/// The centre density at a wall along x: the profile extrapolated to
+/// contact (x = r) from both walls' first bins, per unit length (1D), area
+/// (2D) or volume (3D). None unless x has walls and the balls share a
+/// radius.
+pub fn wall_density(e: &Ensemble, h: &Histogram) -> Option<f64> {
+    let r = e.balls.first()?.radius;
+    if e.periodic[0] || e.balls.iter().any(|b| b.radius != r) {
+        return None;
+    }
+    let density = profile(e, h);
+    let length = e.size[0];
+    let mut ends = Vec::new();
+    for high in [false, true] {
+        let points: Vec<(f64, f64)> = (h.lo.iter().zip(&h.hi).zip(&density))
+            .map(|((a, b), n)| (0.5 * (a + b), *n))
+            .map(|(x, n)| (if high { length - x } else { x }, n))
+            .filter(|(x, _)| *x >= r)
+            .map(|(x, n)| (x - r, n))
+            .collect();
+        let mut points = points;
+        points.sort_by(|a, b| a.0.total_cmp(&b.0));
+        // Bins straddling contact are part empty: start beyond them.
+        let first: Vec<(f64, f64)> = (points.into_iter())
+            .filter(|(x, _)| *x >= 0.5 * (h.hi[0] - h.lo[0]))
+            .take(CONTACT_BINS)
+            .collect();
+        if first.len() < CONTACT_BINS {
+            return None;
+        }
+        ends.push(quadratic_at_zero(&first));
+    }
+    Some(0.5 * (ends[0] + ends[1]))
+}
+
+/// Number density along x at each bin of a density_x histogram.
+pub fn profile(e: &Ensemble, h: &Histogram) -> Vec<f64> {
+    let n = e.balls.len() as f64;
+    let samples = h.count.iter().sum::<f64>() / n;
+    let cross = e.volume / e.size[0];
+    h.lo.iter()
+        .zip(&h.hi)
+        .zip(&h.count)
+        .map(|((a, b), c)| c / (samples * (b - a) * cross))
+        .collect()
+}
+
+/// Least-squares quadratic through the points, at x = 0.
+pub fn quadratic_at_zero(points: &[(f64, f64)]) -> f64 {
+    // Normal equations for y = c0 + c1 x + c2 x^2.
+    let mut a = [[0.0; 3]; 3];
+    let mut b = [0.0; 3];
+    for &(x, y) in points {
+        let p = [1.0, x, x * x];
+        for i in 0..3 {
+            for j in 0..3 {
+                a[i][j] += p[i] * p[j];
+            }
+            b[i] += p[i] * y;
+        }
+    }
+    solve3(a, b)[0]
+}
+
+fn solve3(mut a: [[f64; 3]; 3], mut b: [f64; 3]) -> [f64; 3] {
+    for col in 0..3 {
+        let pivot = (col..3)
+            .max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))
+            .unwrap_or(col);
+        a.swap(col, pivot);
+        b.swap(col, pivot);
+        for row in col + 1..3 {
+            let f = a[row][col] / a[col][col];
+            for k in col..3 {
+                a[row][k] -= f * a[col][k];
+            }
+            b[row] -= f * b[col];
+        }
+    }
+    let mut x = [0.0; 3];
+    for row in (0..3).rev() {
+        let s: f64 = (row + 1..3).map(|k| a[row][k] * x[k]).sum();
+        x[row] = (b[row] - s) / a[row][row];
+    }
+    x
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quadratic_is_recovered() {
+        let pts: Vec<(f64, f64)> = (0..8)
+            .map(|i| {
+                let x = 0.01 + 0.02 * i as f64;
+                (x, 2.5 - 3.0 * x + 7.0 * x * x)
+            })
+            .collect();
+        assert!((quadratic_at_zero(&pts) - 2.5).abs() < 1e-10);
+    }
+}

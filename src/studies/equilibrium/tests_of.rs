@@ -1,0 +1,197 @@
+//! The statistical tests of one point's replicas: each histogram against
+//! its exact finite-N law and its large-N limit, positions against the
+//! ordered-rod law, early against late halves. Every replica is set beside
+//! its own law (masses are drawn per run); bin errors come from the
+//! replicas' spread (`stats::replicas`).
+
+use super::ensemble::Ensemble;
+use crate::model::run_output::{Histogram, RunOutput};
+use crate::stats::replicas::{Agreement, fractions, zero_mean};
+use crate::theory::maxwell::{MaxwellSpeed, normal_cdf};
+
+/// A bin enters a test when the law puts at least this many counts in it
+/// per replica, on average (so that its spread over replicas is near
+/// Gaussian).
+pub const MIN_EXPECTED: f64 = 20.0;
+
+/// One particle's velocity tests.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Particle {
+    /// Engine index and rank from the left (0-based) at the start.
+    pub index: usize,
+    pub rank: usize,
+    /// Mean mass over the replicas.
+    pub mass: f64,
+    pub exact: Option<Agreement>,
+    pub gaussian: Option<Agreement>,
+    /// Early half against late half.
+    pub halves: Option<Agreement>,
+}
+
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Tests {
+    pub particles: Vec<Particle>,
+    /// Every rod's position histogram against its order-statistics law,
+    /// all ranks' bins in one test.
+    pub positions: Option<Agreement>,
+    /// Scaled v_x of all particles against the exact law and the Gaussian.
+    pub vx_exact: Option<Agreement>,
+    pub vx_gaussian: Option<Agreement>,
+    /// Scaled speeds against the exact law and Maxwell-Boltzmann.
+    pub speed_exact: Option<Agreement>,
+    pub speed_mb: Option<Agreement>,
+}
+
+fn find<'a>(out: &'a RunOutput, name: &str) -> Option<&'a Histogram> {
+    out.histograms.iter().find(|h| h.observable == name)
+}
+
+/// Deviations of each replica's histogram `name(r)` from the law's
+/// probabilities `law(r, lo, hi)`, and the bins with enough expected
+/// counts; None when a replica lacks the histogram.
+fn deviations(
+    runs: &[(&Ensemble, &RunOutput)],
+    name: &dyn Fn(usize) -> String,
+    law: &dyn Fn(usize, f64, f64) -> f64,
+) -> Option<(Vec<Vec<f64>>, Vec<bool>)> {
+    let mut rows = Vec::new();
+    let mut expected: Vec<f64> = Vec::new();
+    for (r, (_, out)) in runs.iter().enumerate() {
+        let h = find(out, &name(r))?;
+        let total: f64 = h.count.iter().sum();
+        let p: Vec<f64> =
+            h.lo.iter()
+                .zip(&h.hi)
+                .map(|(a, b)| law(r, *a, *b))
+                .collect();
+        if expected.is_empty() {
+            expected = vec![0.0; p.len()];
+        }
+        expected
+            .iter_mut()
+            .zip(&p)
+            .for_each(|(e, p)| *e += p * total);
+        rows.push(
+            fractions(&h.count)
+                .iter()
+                .zip(&p)
+                .map(|(f, p)| f - p)
+                .collect(),
+        );
+    }
+    let n = runs.len() as f64;
+    let keep = expected.iter().map(|e| e / n >= MIN_EXPECTED).collect();
+    Some((rows, keep))
+}
+
+fn test(
+    runs: &[(&Ensemble, &RunOutput)],
+    name: &dyn Fn(usize) -> String,
+    law: &dyn Fn(usize, f64, f64) -> f64,
+) -> Option<Agreement> {
+    let (rows, keep) = deviations(runs, name, law)?;
+    zero_mean(&rows, &keep)
+}
+
+pub fn tests_of(runs: &[(&Ensemble, &RunOutput)]) -> Tests {
+    let mut t = Tests::default();
+    let Some((first, _)) = runs.first() else {
+        return t;
+    };
+    for (rank, ball) in first.by_rank().iter().enumerate() {
+        let i = ball.index;
+        let mass_of = |r: usize| {
+            runs[r]
+                .0
+                .balls
+                .iter()
+                .find(|b| b.index == i)
+                .map_or(f64::NAN, |b| b.mass)
+        };
+        let exact = |r: usize, a: f64, b: f64| runs[r].0.velocity_law(mass_of(r)).probability(a, b);
+        let gaussian = |r: usize, a: f64, b: f64| {
+            let law = runs[r].0.velocity_law(mass_of(r));
+            normal_cdf(b, law.centre, law.std()) - normal_cdf(a, law.centre, law.std())
+        };
+        let name = |_: usize| format!("velocity_x.{i}");
+        let halves =
+            deviations(runs, &|_| format!("velocity_x_early.{i}"), &exact).and_then(|(_, keep)| {
+                let rows: Option<Vec<Vec<f64>>> = runs
+                    .iter()
+                    .map(|(_, out)| {
+                        let early = fractions(&find(out, &format!("velocity_x_early.{i}"))?.count);
+                        let late = fractions(&find(out, &format!("velocity_x_late.{i}"))?.count);
+                        Some(early.iter().zip(&late).map(|(a, b)| a - b).collect())
+                    })
+                    .collect();
+                zero_mean(&rows?, &keep)
+            });
+        let particle = Particle {
+            index: i,
+            rank,
+            mass: (0..runs.len()).map(mass_of).sum::<f64>() / runs.len() as f64,
+            exact: test(runs, &name, &exact),
+            gaussian: test(runs, &name, &gaussian),
+            halves,
+        };
+        if find(runs[0].1, &format!("velocity_x.{i}")).is_some() || particle.halves.is_some() {
+            t.particles.push(particle);
+        }
+    }
+    t.positions = positions(runs);
+    // Scaled v_x and speeds: each particle's law, averaged over the particles.
+    let mixture = |r: usize, law: &dyn Fn(&Ensemble, f64) -> f64| {
+        let e = runs[r].0;
+        e.balls.iter().map(|b| law(e, b.mass)).sum::<f64>() / e.balls.len() as f64
+    };
+    let vx = |_: usize| "scaled_velocity_x".to_string();
+    t.vx_exact = test(runs, &vx, &|r, a, b| {
+        mixture(r, &|e, m| {
+            e.velocity_law(m).probability(a / m.sqrt(), b / m.sqrt())
+        })
+    });
+    t.vx_gaussian = test(runs, &vx, &|r, a, b| {
+        let s = runs[r].0.kt().sqrt();
+        normal_cdf(b, 0.0, s) - normal_cdf(a, 0.0, s)
+    });
+    let speed = |_: usize| "scaled_speed".to_string();
+    t.speed_exact = test(runs, &speed, &|r, a, b| {
+        mixture(r, &|e, m| e.speed_law(m).probability(a, b))
+    });
+    t.speed_mb = test(runs, &speed, &|r, a, b| {
+        let e = runs[r].0;
+        MaxwellSpeed {
+            kt: e.kt(),
+            dimension: e.dimension as f64,
+        }
+        .probability(a, b)
+    });
+    t
+}
+
+/// Every rank's position histogram against its law, in one test.
+fn positions(runs: &[(&Ensemble, &RunOutput)]) -> Option<Agreement> {
+    let mut rows: Vec<Vec<f64>> = vec![Vec::new(); runs.len()];
+    let mut keep = Vec::new();
+    let ranks = runs.first()?.0.rod_laws()?.len();
+    for k in 0..ranks {
+        let (dev, kept) = deviations(
+            runs,
+            &|r| {
+                format!(
+                    "position_x.{}",
+                    runs[r].0.rod_laws().map_or(0, |l| l[k].0.index)
+                )
+            },
+            &|r, a, b| {
+                runs[r]
+                    .0
+                    .rod_laws()
+                    .map_or(f64::NAN, |l| l[k].1.probability(a, b))
+            },
+        )?;
+        rows.iter_mut().zip(dev).for_each(|(row, d)| row.extend(d));
+        keep.extend(kept);
+    }
+    zero_mean(&rows, &keep)
+}
