@@ -1,10 +1,11 @@
 //! One run: scene -> dynamics -> observers -> analyses -> RunOutput.
 //!
 //! The run loop (`simulate`) is written once against `engine::Dynamics`;
-//! which integrator moves the particles is decided by the factory the
-//! dimension picks (`rods` or `balls`), and nowhere else.
+//! which integrator moves the particles is decided by `[run] integrator`
+//! and the factory the dimension picks (`rods` or `balls`), and nowhere else.
 
-use crate::engine::{Chain, Dynamics, NeighbourList, Neighbourhood, Simulation, Stop};
+use crate::engine::{Chain, Dynamics, NeighbourList, Neighbourhood, Simulation, Stepper, Stop};
+use crate::model::descriptor::{Integrator, RunSection};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::observe::{self, Context, ObserverSet};
@@ -29,10 +30,39 @@ pub fn run(spec: &RunSpec) -> anyhow::Result<RunOutput> {
 /// What moves a run's particles, seen through the trait only.
 type Engine<const D: usize> = Box<dyn Dynamics<D, ObserverSet<D>>>;
 
-/// Builds the dynamics of a built scene, given its observers and the seed of
-/// its random stream (thermal walls).
+/// Builds the exact dynamics of a built scene, given its observers and the
+/// seed of its random stream (thermal walls).
 type Factory<const D: usize> =
     fn(&scene::Built<D>, ObserverSet<D>, u64) -> anyhow::Result<Engine<D>>;
+
+/// The integrator `[run]` asks for: a fixed step, or the dimension's exact
+/// engine.
+fn dynamics<const D: usize>(
+    run: &RunSection,
+    exact: Factory<D>,
+    built: &scene::Built<D>,
+    observers: ObserverSet<D>,
+    seed: u64,
+) -> anyhow::Result<Engine<D>> {
+    let approach_check = match run.integrator {
+        Integrator::Exact => return exact(built, observers, seed),
+        Integrator::FixedStep => true,
+        Integrator::FixedStepNaive => false,
+    };
+    let dt = run
+        .dt
+        .ok_or_else(|| anyhow!("`run.dt`: a fixed step needs its length"))?;
+    let stepper = Stepper::new(
+        built.particles.clone(),
+        built.sim_box,
+        observers,
+        seed,
+        dt,
+        approach_check,
+    )
+    .context("the scene cannot be stepped")?;
+    Ok(Box::new(stepper))
+}
 
 /// Rods: the event-driven engine with a chain of neighbours.
 fn rods(
@@ -93,7 +123,7 @@ fn simulate<const D: usize>(
     )
     .map_err(|e| anyhow!("observe: {e}"))?;
     let engine_seed = rand::RngExt::random::<u64>(&mut rng);
-    let mut sim = factory(&built, observers, engine_seed)?;
+    let mut sim = dynamics(&d.run, factory, &built, observers, engine_seed)?;
 
     let equilibrate = d.run.equilibrate;
     if equilibrate > 0.0 {
@@ -133,6 +163,7 @@ fn simulate<const D: usize>(
     };
     let energy1 = sim.kinetic_energy();
     let thermal = sim_box.has_thermal_walls();
+    let diagnostics = sim.diagnostics();
     sim.into_observer().finish(&ctx, &mut out);
     if !thermal {
         out.scalars.push((
@@ -140,6 +171,8 @@ fn simulate<const D: usize>(
             (energy1 - energy0).abs() / energy0.max(f64::MIN_POSITIVE),
         ));
     }
+    out.scalars
+        .extend(diagnostics.into_iter().map(|(n, v)| (n.to_string(), v)));
     let finished = studies::Finished {
         descriptor: d,
         start: Start::of(&built),

@@ -3,6 +3,7 @@
 //! its results and its report section. Registering one is a line in
 //! `REGISTRY`; a descriptor asks for it as `[analysis.<name>]`.
 
+pub mod accuracy;
 pub mod expansion;
 pub mod options;
 pub mod piston;
@@ -18,7 +19,12 @@ use crate::scene::Built;
 pub use options::StudyOption;
 
 /// Every study bonkers knows: one line each.
-pub const REGISTRY: &[&dyn Study] = &[&piston::Piston, &pressure::Pressure, &expansion::Expansion];
+pub const REGISTRY: &[&dyn Study] = &[
+    &piston::Piston,
+    &pressure::Pressure,
+    &expansion::Expansion,
+    &accuracy::Accuracy,
+];
 
 /// A finished run as a study sees it: its descriptor, the scene as built
 /// (in its dimension) and what the run measured.
