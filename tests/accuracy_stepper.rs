@@ -184,3 +184,46 @@ fn what_a_fixed_step_cannot_move_is_refused_with_the_reason() {
     let err = Stepper::new(one, SimBox::hard([4.0; 2]), (), 1, 0.0, true).unwrap_err();
     assert!(err.0.contains("dt"), "{}", err.0);
 }
+
+/// The Imperial project's sticking case (five disks of radius 3, dt = 0.25
+/// as in the seed): without the approach check overlapping disks bounce
+/// back into each other and stay stuck (98 step ends in a row); with it,
+/// none is stuck and every overlap clears within a few step ends (3 here,
+/// where a third disk pushes one of a separating pair back once).
+#[test]
+fn the_seeds_sticking_case_sticks_only_without_the_fix() {
+    let positions = [
+        [45.0, 50.0],
+        [55.0, 60.0],
+        [35.0, 39.75],
+        [65.0, 70.25],
+        [54.0, 30.0],
+    ];
+    let velocities = [[1.0, 1.0], [0.0, 0.0], [2.0, 2.0], [-1.0, -1.0], [0.5, 2.5]];
+    let diagnostics = |approach_check: bool| {
+        let particles: Vec<Particle<2>> = positions
+            .iter()
+            .zip(velocities)
+            .map(|(&x, v)| Particle::new(x, v, 1.0, 3.0))
+            .collect();
+        let mut sim = Stepper::new(
+            particles,
+            SimBox::hard([100.0; 2]),
+            (),
+            1,
+            0.25,
+            approach_check,
+        )
+        .unwrap();
+        sim.advance(Stop::Time(125.0));
+        let d = sim.diagnostics();
+        let get = |name: &str| d.iter().find(|(n, _)| *n == name).unwrap().1;
+        (get("stuck_pairs"), get("overlap_steps_max"))
+    };
+    let (stuck, longest) = diagnostics(false);
+    eprintln!("without the fix: {stuck} stuck pairs, longest overlap {longest} steps");
+    assert!(stuck >= 1.0 && longest > 10.0);
+    let (stuck, longest) = diagnostics(true);
+    eprintln!("with the fix: {stuck} stuck pairs, longest overlap {longest} steps");
+    assert!(stuck == 0.0 && longest < 10.0);
+}

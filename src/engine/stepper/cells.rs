@@ -1,6 +1,8 @@
 //! A cell list rebuilt every step: the box cut into cells at least one
 //! contact distance wide, so an overlapping pair always lies in one cell or
-//! two adjacent ones. Flat arrays (a counting sort), no allocation per step.
+//! two adjacent ones, and about as many cells as particles, so that a dilute
+//! gas does not pay for empty cells. Flat arrays (a counting sort), no
+//! allocation per step.
 
 use crate::engine::boundary::SimBox;
 use crate::engine::particle::Particle;
@@ -9,12 +11,14 @@ use crate::engine::particle::Particle;
 pub struct Cells<const D: usize> {
     /// Cells along each axis.
     count: [usize; D],
-    /// Width of a cell along each axis.
-    width: [f64; D],
+    /// 1 / width of a cell along each axis.
+    inverse_width: [f64; D],
     /// Particles of cell c are `items[start[c]..start[c + 1]]`.
     start: Vec<u32>,
     items: Vec<u32>,
     cell_of: Vec<u32>,
+    /// Scratch for the counting sort (next free slot per cell).
+    next: Vec<u32>,
     /// Cells adjacent to c with a higher index, each once (periodic wrap
     /// applied): `up[up_start[c]..up_start[c + 1]]`. With the pairs inside a
     /// cell this visits every pair of neighbouring cells exactly once.
@@ -25,11 +29,11 @@ pub struct Cells<const D: usize> {
 impl<const D: usize> Cells<D> {
     /// Cells for a box and particles whose largest contact distance is `reach`.
     pub fn new(sim_box: &SimBox<D>, reach: f64, particles: usize) -> Self {
-        let count: [usize; D] = std::array::from_fn(|k| {
-            let n = (sim_box.size[k] / reach.max(f64::MIN_POSITIVE)).floor();
-            n.clamp(1.0, 1e6) as usize
-        });
-        let width = std::array::from_fn(|k| sim_box.size[k] / count[k] as f64);
+        let per_particle = (sim_box.volume() / particles.max(1) as f64).powf(1.0 / D as f64);
+        let least = reach.max(per_particle).max(f64::MIN_POSITIVE);
+        let count: [usize; D] =
+            std::array::from_fn(|k| (sim_box.size[k] / least).floor().clamp(1.0, 1e6) as usize);
+        let inverse_width = std::array::from_fn(|k| count[k] as f64 / sim_box.size[k]);
         let total: usize = count.iter().product();
         let mut up_start = Vec::with_capacity(total + 1);
         let mut up = Vec::new();
@@ -50,8 +54,9 @@ impl<const D: usize> Cells<D> {
         up_start.push(up.len() as u32);
         Cells {
             count,
-            width,
+            inverse_width,
             start: vec![0; total + 1],
+            next: vec![0; total + 1],
             items: vec![0; particles],
             cell_of: vec![0; particles],
             up_start,
@@ -65,9 +70,9 @@ impl<const D: usize> Cells<D> {
         for (i, p) in particles.iter().enumerate() {
             let mut c = 0;
             for k in (0..D).rev() {
-                // Overlapping a wall puts a centre a little outside the box.
-                let x = (p.pos[k] / self.width[k]).floor();
-                let x = x.clamp(0.0, (self.count[k] - 1) as f64) as usize;
+                // Overlapping a wall puts a centre a little outside the box
+                // (truncation sends a little below 0 to cell 0 too).
+                let x = ((p.pos[k] * self.inverse_width[k]) as usize).min(self.count[k] - 1);
                 c = c * self.count[k] + x;
             }
             self.cell_of[i] = c as u32;
@@ -76,9 +81,9 @@ impl<const D: usize> Cells<D> {
         for c in 1..self.start.len() {
             self.start[c] += self.start[c - 1];
         }
-        let mut next = self.start.clone();
+        self.next.copy_from_slice(&self.start);
         for (i, &c) in self.cell_of.iter().enumerate() {
-            let slot = &mut next[c as usize];
+            let slot = &mut self.next[c as usize];
             self.items[*slot as usize] = i as u32;
             *slot += 1;
         }
@@ -90,6 +95,9 @@ impl<const D: usize> Cells<D> {
     pub fn pairs(&self, mut f: impl FnMut(usize, usize)) {
         for c in 0..self.start.len() - 1 {
             let here = self.members(c);
+            if here.is_empty() {
+                continue;
+            }
             for (a, &i) in here.iter().enumerate() {
                 for &j in &here[a + 1..] {
                     f(i as usize, j as usize);

@@ -46,54 +46,52 @@ impl<const D: usize, O: Observer<D>> Stepper<D, O> {
     }
 
     fn walls(&mut self) {
-        for k in 0..D {
-            let l = self.sim_box.size[k];
-            for high in [false, true] {
-                let Some(wall) = self.sim_box.axes[k].wall(high) else {
+        for i in 0..self.particles.len() {
+            for k in 0..D {
+                let p = &self.particles[i];
+                let high = if p.pos[k] + p.radius > self.sim_box.size[k] {
+                    true
+                } else if p.pos[k] - p.radius < 0.0 {
+                    false
+                } else {
                     continue;
                 };
-                let outward = if high { 1.0 } else { -1.0 };
-                for i in 0..self.particles.len() {
-                    let p = &mut self.particles[i];
-                    let past = if high {
-                        p.pos[k] + p.radius > l
-                    } else {
-                        p.pos[k] - p.radius < 0.0
-                    };
-                    let leaving = p.vel[k] * outward > 0.0;
-                    let hard = matches!(wall, Wall::Hard);
-                    // A bath always sends the particle back in; a hard wall
-                    // without the fix reflects whatever the direction.
-                    if !past || p.is_immovable() || !(leaving || (hard && !self.approach_check)) {
-                        continue;
-                    }
-                    let before = p.vel;
-                    match wall {
-                        Wall::Hard => p.vel[k] = -p.vel[k],
-                        Wall::Thermal { temperature } => {
-                            p.vel = thermal::emit::<D>(
-                                &mut self.rng,
-                                temperature,
-                                p.inv_mass,
-                                k,
-                                -outward,
-                            );
-                        }
-                    }
-                    let m = p.mass();
-                    let event = WallHit {
-                        time: self.time,
-                        i,
-                        axis: k,
-                        high,
-                        impulse: std::array::from_fn(|a| m * (p.vel[a] - before[a])),
-                        energy_gain: 0.5 * m * (norm2(&p.vel) - norm2(&before)),
-                    };
-                    self.counts.wall_hits += 1;
-                    self.observer.wall_hit(&event);
+                if let Some(wall) = self.sim_box.axes[k].wall(high) {
+                    self.bounce_off(i, k, high, wall);
                 }
             }
         }
+    }
+
+    /// Particle i overlaps the wall `high` of axis k at the step end.
+    fn bounce_off(&mut self, i: usize, k: usize, high: bool, wall: Wall) {
+        let outward = if high { 1.0 } else { -1.0 };
+        let p = &mut self.particles[i];
+        let leaving = p.vel[k] * outward > 0.0;
+        let hard = matches!(wall, Wall::Hard);
+        // A bath always sends the particle back in; a hard wall without the
+        // fix reflects whatever the direction.
+        if p.is_immovable() || !(leaving || (hard && !self.approach_check)) {
+            return;
+        }
+        let before = p.vel;
+        match wall {
+            Wall::Hard => p.vel[k] = -p.vel[k],
+            Wall::Thermal { temperature } => {
+                p.vel = thermal::emit::<D>(&mut self.rng, temperature, p.inv_mass, k, -outward);
+            }
+        }
+        let m = p.mass();
+        let event = WallHit {
+            time: self.time,
+            i,
+            axis: k,
+            high,
+            impulse: std::array::from_fn(|a| m * (p.vel[a] - before[a])),
+            energy_gain: 0.5 * m * (norm2(&p.vel) - norm2(&before)),
+        };
+        self.counts.wall_hits += 1;
+        self.observer.wall_hit(&event);
     }
 
     fn pairs(&mut self) {
