@@ -56,6 +56,13 @@ fn a_small_study_compares_both_integrators() {
     assert_eq!(runs.len(), 2 * 2 * 2 + 4);
     for (spec, out) in &runs {
         assert!(out.scalar("wall_pressure").unwrap() > 0.0);
+        // Dense disks: βP = Z ρ well above the ideal gas's ρ = 0.51 (the
+        // exact engine's: the naive fixed step's stuck pairs push it far up).
+        let beta_p = out.scalar("beta_pressure").unwrap();
+        assert!(beta_p > 0.0);
+        if spec.descriptor.run.integrator.is_exact() {
+            assert!(beta_p > 1.2 && beta_p < 2.2, "βP {beta_p}");
+        }
         assert!(out.scalar("collision_rate").unwrap() > 0.0);
         let drift = out.scalar("energy_drift").unwrap();
         assert!(drift < 1e-12, "energy drift {drift}");
@@ -67,7 +74,12 @@ fn a_small_study_compares_both_integrators() {
     let section = studies::accuracy::Accuracy
         .section(&runs[0].0.descriptor, &runs)
         .unwrap();
-    assert_eq!(section.figures.len(), 1, "the error-cost chart");
+    assert_eq!(
+        section.figures.len(),
+        1,
+        "the error-cost chart:\n{}",
+        section.markdown
+    );
     let md = &section.markdown;
     for want in [
         "Sticking, disks-dense",

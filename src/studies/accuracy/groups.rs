@@ -13,7 +13,10 @@ pub struct Group {
     pub integrator: Integrator,
     /// NaN for the exact engine.
     pub dt: f64,
+    /// Simulated time of each run (NaN for runs stopped by collisions).
+    pub duration: f64,
     pub runs: usize,
+    /// Wall pressure over each run's own kT.
     pub pressure: Stats,
     pub collision_rate: Stats,
     pub frequency: Stats,
@@ -43,10 +46,16 @@ pub fn scene_of(spec: &RunSpec) -> String {
 
 /// Groups in the order their first run comes in the plan.
 pub fn groups(runs: &[(RunSpec, RunOutput)]) -> Vec<Group> {
-    let mut keys: Vec<(String, Integrator, u64)> = Vec::new();
+    let mut keys: Vec<(String, Integrator, u64, u64)> = Vec::new();
     let key = |s: &RunSpec| {
         let dt = s.descriptor.run.dt.unwrap_or(f64::NAN);
-        (scene_of(s), s.descriptor.run.integrator, dt.to_bits())
+        let duration = s.descriptor.run.duration.unwrap_or(f64::NAN);
+        (
+            scene_of(s),
+            s.descriptor.run.integrator,
+            dt.to_bits(),
+            duration.to_bits(),
+        )
     };
     for (s, _) in runs {
         let k = key(s);
@@ -61,7 +70,9 @@ pub fn groups(runs: &[(RunSpec, RunOutput)]) -> Vec<Group> {
                 .filter(|(s, _)| key(s) == k)
                 .map(|(_, o)| o)
                 .collect();
-            group(k.0, k.1, f64::from_bits(k.2), &members)
+            let mut g = group(k.0, k.1, f64::from_bits(k.2), &members);
+            g.duration = f64::from_bits(k.3);
+            g
         })
         .collect()
 }
@@ -87,8 +98,9 @@ fn group(scene: String, integrator: Integrator, dt: f64, runs: &[&RunOutput]) ->
         scene,
         integrator,
         dt,
+        duration: f64::NAN,
         runs: runs.len(),
-        pressure: Stats::of(&values("wall_pressure")),
+        pressure: Stats::of(&values("beta_pressure")),
         collision_rate: Stats::of(&values("collision_rate")),
         frequency: Stats::of(&values("piston_frequency")),
         energy_drift: mean(&values("energy_drift")),

@@ -5,10 +5,12 @@
 //! pressure, collision rate, frequency and energy against the exact engine's
 //! runs of the same scene, and sets every error beside the CPU time it cost.
 
+mod effort;
 mod groups;
 mod section;
 
-use super::{Finished, Study};
+use super::{Finished, Start, Study};
+use crate::engine::Particle;
 use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
 use crate::model::report::ReportSection;
@@ -16,7 +18,7 @@ use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 
 /// The results it adds to each run (the frequency only with a piston).
-pub const RESULTS: &[&str] = &["collision_rate", "piston_frequency"];
+pub const RESULTS: &[&str] = &["collision_rate", "beta_pressure", "piston_frequency"];
 
 /// Run results the section shows in its tables (the stepper's own
 /// diagnostics and the observables the descriptor asks for).
@@ -62,6 +64,18 @@ impl Study for Accuracy {
             "collision_rate".into(),
             out.collisions as f64 / duration.max(f64::MIN_POSITIVE),
         ));
+        // Each run's gas has its own energy (a Maxwellian draw of a few
+        // dozen particles scatters by ~10 %), and the pressure follows it:
+        // βP = P / kT with the run's own kT = 2K/f is what runs share.
+        let kinetic = match run.start {
+            Start::Rods(b) => energy(&b.particles),
+            Start::Disks(b) => energy(&b.particles),
+            Start::Spheres(b) => energy(&b.particles),
+        };
+        if let Some(p) = out.scalar("wall_pressure") {
+            let kt = 2.0 * kinetic / run.context.degrees_of_freedom;
+            out.scalars.push(("beta_pressure".into(), p / kt));
+        }
         if run.context.piston.is_none() {
             // Recorded for the piston scenes only: elsewhere it is all NaN.
             out.series.retain(|s| s.observable != "piston_position");
@@ -79,4 +93,9 @@ impl Study for Accuracy {
     ) -> anyhow::Result<ReportSection> {
         Ok(section::section(runs))
     }
+}
+
+/// Kinetic energy at the start (both integrators conserve it).
+fn energy<const D: usize>(particles: &[Particle<D>]) -> f64 {
+    particles.iter().map(Particle::kinetic_energy).sum()
 }

@@ -27,19 +27,16 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> ReportSection {
     }
     let mut figures = Vec::new();
     let chart = cost_chart(&all, &scenes);
-    if chart
-        .layers
-        .iter()
-        .any(|l| !matches!(l, Layer::Line { .. }))
-    {
+    if !chart.layers.is_empty() {
         figures.push(Figure {
             file: "accuracy_cost.svg".into(),
             chart,
         });
         md.push_str(
-            "\n![Relative error of the wall pressure (the piston's frequency for the piston scene) \
+            "\n![Relative error of the wall pressure βP (the piston's frequency for the piston scene) \
              against the CPU seconds of one run. Markers joined by a line: the fixed step, one marker per dt \
-             (largest dt cheapest); its error is its bias against the exact engine's mean. Open dashed lines: \
+             (largest dt cheapest); its error is its bias against the exact engine's mean, drawn faded at its \
+             upper bound (difference plus two standard errors) where these runs do not resolve it. Dashed lines: \
              the exact engine, whose only error is statistical: one run's scatter at one run's cost, falling as \
              cost^(-1/2) with more runs.](accuracy_cost.svg)\n",
         );
@@ -47,6 +44,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> ReportSection {
     for scene in &scenes {
         md.push_str(&table(scene, &all));
     }
+    md.push_str(&super::effort::effort(&all, &scenes));
     md.push_str(METHODS);
     ReportSection {
         title: "What accuracy costs in time: fixed step against exact events".into(),
@@ -60,9 +58,20 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> ReportSection {
     }
 }
 
-fn exact<'a>(all: &'a [Group], scene: &str) -> Option<&'a Group> {
-    all.iter()
-        .find(|g| g.scene == scene && g.integrator == Integrator::Exact)
+/// The exact engine's runs a scene's fixed steps are measured against: those
+/// as long as the fixed steps' runs (the study may add exact runs of other
+/// lengths for the statistics).
+pub fn exact<'a>(all: &'a [Group], scene: &str) -> Option<&'a Group> {
+    let mut exact = all
+        .iter()
+        .filter(|g| g.scene == scene && g.integrator == Integrator::Exact);
+    let stepped = all
+        .iter()
+        .find(|g| g.scene == scene && g.integrator != Integrator::Exact);
+    match stepped {
+        Some(s) => exact.find(|g| g.duration.to_bits() == s.duration.to_bits()),
+        None => exact.next(),
+    }
 }
 
 /// The fixed-step groups of a scene with `integrator`, by increasing dt.
@@ -81,12 +90,12 @@ pub fn headline(g: &Group) -> (&'static str, &Stats) {
     if g.frequency.n > 0 {
         ("piston frequency", &g.frequency)
     } else {
-        ("wall pressure", &g.pressure)
+        ("wall pressure βP", &g.pressure)
     }
 }
 
 /// Relative scatter of one run's headline result.
-fn scatter(g: &Group) -> f64 {
+pub fn scatter(g: &Group) -> f64 {
     let (_, s) = headline(g);
     s.std / s.mean.abs()
 }
@@ -215,18 +224,23 @@ fn budget(scene: &str, reference: &Group, pts: &[&Group], seconds: f64) -> Optio
     let best = pts
         .iter()
         .filter_map(|g| {
-            let (e, _) = error(headline(g).1, headline(reference).1)?;
-            let total = (e * e + scatter(g).powi(2) * g.cpu / seconds).sqrt();
+            // The bias as far as these runs can exclude it (two standard
+            // errors above the measured difference).
+            let (e, se) = error(headline(g).1, headline(reference).1)?;
+            let bias = e + 2.0 * se;
+            let total = (bias * bias + scatter(g).powi(2) * g.cpu / seconds).sqrt();
             total.is_finite().then_some((g.dt, total))
         })
         .min_by(|a, b| a.1.total_cmp(&b.1))?;
-    if !exact_error.is_finite() {
+    // Runs too short for the CPU clock's ticks measure no cost.
+    if !exact_error.is_finite() || reference.cpu <= 0.0 {
         return None;
     }
     let (what, _) = headline(reference);
     Some(format!(
-        "Cost, {scene}: one CPU-second buys the exact engine a {what} within {} % (statistical, \
-         runs of {} s each); the fixed step's best use of it, dt = {}, is within {} % (bias and scatter).",
+        "Cost, {scene}: one CPU-second buys the exact engine a {what} within {} % (its statistical \
+         error, from runs of {} s each); the fixed step's best use of it, dt = {}, is within {} % at most \
+         (its bias, bounded by these runs at two standard errors, and its own scatter).",
         num(100.0 * exact_error),
         num(reference.cpu),
         num(best.0),
@@ -241,29 +255,44 @@ fn cost_chart(all: &[Group], scenes: &[String]) -> ChartSpec {
             continue;
         };
         let paint = colour(k);
-        let pts: Vec<(f64, f64)> = steps(all, scene, Integrator::FixedStep)
+        // (CPU, error, resolved): an error within two standard errors of 0
+        // is drawn at its upper bound, faded.
+        let pts: Vec<(f64, f64, bool)> = steps(all, scene, Integrator::FixedStep)
             .iter()
             .filter_map(|g| {
-                let (e, _) = error(headline(g).1, headline(reference).1)?;
-                Some((g.cpu, e))
+                let (e, se) = error(headline(g).1, headline(reference).1)?;
+                let resolved = e > 2.0 * se;
+                Some((g.cpu, if resolved { e } else { e + 2.0 * se }, resolved))
             })
-            .filter(|&(c, e)| c > 0.0 && e > 0.0)
+            .filter(|&(c, e, _)| c > 0.0 && e > 0.0)
             .collect();
         let (what, _) = headline(reference);
         layers.push(Layer::Line {
-            points: pts.clone(),
-            paint: paint.faded(0.6),
+            points: pts.iter().map(|&(c, e, _)| (c, e)).collect(),
+            paint: paint.faded(0.4),
             width: 1,
             dashed: false,
             label: None,
         });
-        layers.push(Layer::Markers {
-            points: pts,
-            paint,
-            label: Some(format!("{scene}: fixed step ({what})")),
-        });
+        for (resolved, label) in [
+            (true, format!("{scene}: fixed step ({what})")),
+            (false, format!("{scene}: fixed step, bound (not resolved)")),
+        ] {
+            let marked: Vec<(f64, f64)> = pts
+                .iter()
+                .filter(|p| p.2 == resolved)
+                .map(|&(c, e, _)| (c, e))
+                .collect();
+            if !marked.is_empty() {
+                layers.push(Layer::Markers {
+                    points: marked,
+                    paint: if resolved { paint } else { paint.faded(0.35) },
+                    label: Some(label),
+                });
+            }
+        }
         let s = scatter(reference);
-        if s > 0.0 && reference.cpu > 0.0 {
+        if s > 1e-9 && reference.cpu > 0.0 {
             let c0 = reference.cpu;
             layers.push(Layer::Line {
                 points: (0..=20)
@@ -281,7 +310,7 @@ fn cost_chart(all: &[Group], scenes: &[String]) -> ChartSpec {
     }
     ChartSpec {
         title: "Error against CPU time".into(),
-        x_label: "CPU seconds".into(),
+        x_label: "CPU seconds of one run".into(),
         y_label: "relative error".into(),
         x_log: true,
         y_log: true,
@@ -292,11 +321,20 @@ fn cost_chart(all: &[Group], scenes: &[String]) -> ChartSpec {
 fn table(scene: &str, all: &[Group]) -> String {
     let reference = exact(all, scene);
     let mut md = format!(
-        "\n### {scene}\n\n| integrator | dt | runs | wall pressure | error | collision rate | error | \
+        "\n### {scene}\n\n| integrator | dt | runs | βP | error | collision rate | error | \
          piston frequency | error | energy drift | deepest overlap | mean overlap | longest overlap (steps) | \
          stuck pairs/run | repeat collisions | CPU s/run |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n"
     );
-    let mut rows: Vec<&Group> = all.iter().filter(|g| g.scene == scene).collect();
+    // The reference and the fixed steps; exact runs of other lengths are
+    // the statistics part's.
+    let mut rows: Vec<&Group> = all
+        .iter()
+        .filter(|g| {
+            g.scene == scene
+                && (g.integrator != Integrator::Exact
+                    || reference.is_some_and(|r| std::ptr::eq(*g, r)))
+        })
+        .collect();
     rows.sort_by(|a, b| {
         (a.integrator as u8)
             .cmp(&(b.integrator as u8))
@@ -362,7 +400,8 @@ const METHODS: &str = "\n### How it is measured\n\n\
 Each scene runs with the exact engine (the reference) and with the fixed step at each dt, with and without the \
 approach check, in independent replicas. **Errors** are relative differences of ensemble means, |fixed / exact − 1|, \
 with the standard error of both ensembles combined; an error within about two standard errors is noise, not \
-bias. **Wall pressure** is the momentum the walls receive per unit time and wall length; the fixed step reflects a \
+bias. **Wall pressure** is the momentum the walls receive per unit time and wall length, over each run's own \
+kT = 2K/f (βP: every run draws its own energy, and the pressure follows it); the fixed step reflects a \
 wall overlap at the step's end, so its impulses are right but late. **Collision rate** is pair collisions per unit \
 time: a fixed step misses pairs that cross without overlapping at a step end (both move more than a diameter \
 relative to each other in one step) and makes repeat collisions of a pair still overlapping from the step \
