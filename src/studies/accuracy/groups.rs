@@ -15,6 +15,8 @@ pub struct Group {
     pub dt: f64,
     /// Simulated time of each run (NaN for runs stopped by collisions).
     pub duration: f64,
+    /// Whether the scene has a piston (its frequency is then the headline).
+    pub piston: bool,
     pub runs: usize,
     /// Wall pressure over each run's own kT.
     pub pressure: Stats,
@@ -70,8 +72,13 @@ pub fn groups(runs: &[(RunSpec, RunOutput)]) -> Vec<Group> {
                 .filter(|(s, _)| key(s) == k)
                 .map(|(_, o)| o)
                 .collect();
-            let mut g = group(k.0, k.1, f64::from_bits(k.2), &members);
+            let mut g = group(k.0.clone(), k.1, f64::from_bits(k.2), &members);
             g.duration = f64::from_bits(k.3);
+            g.piston = runs
+                .iter()
+                .find(|(s, _)| key(s) == k)
+                .and_then(|(s, _)| crate::scene::resolve(&s.descriptor.scene).ok())
+                .is_some_and(|scene| scene.piston.is_some());
             g
         })
         .collect()
@@ -99,6 +106,7 @@ fn group(scene: String, integrator: Integrator, dt: f64, runs: &[&RunOutput]) ->
         integrator,
         dt,
         duration: f64::NAN,
+        piston: false,
         runs: runs.len(),
         pressure: Stats::of(&values("beta_pressure")),
         collision_rate: Stats::of(&values("collision_rate")),

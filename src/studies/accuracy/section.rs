@@ -87,7 +87,7 @@ fn steps<'a>(all: &'a [Group], scene: &str, integrator: Integrator) -> Vec<&'a G
 /// The quantity a scene's accuracy is judged by: the piston's frequency
 /// where there is one, else the wall pressure.
 pub fn headline(g: &Group) -> (&'static str, &Stats) {
-    if g.frequency.n > 0 {
+    if g.piston {
         ("piston frequency", &g.frequency)
     } else {
         ("wall pressure βP", &g.pressure)
@@ -165,9 +165,16 @@ fn sticking(scene: &str, naive: &[&Group], fixed: &[&Group]) -> Option<String> {
             num(worst.dt)
         ),
     };
-    let fixed_stuck = fixed.iter().map(|g| g.stuck).fold(0.0, f64::max);
-    let fixed_text = if fixed_stuck > 0.0 {
-        format!("with it, still up to {} per run", num(fixed_stuck))
+    let fixed_worst = fixed.iter().max_by(|a, b| a.stuck.total_cmp(&b.stuck));
+    let fixed_text = if let Some(w) = fixed_worst.filter(|w| w.stuck > 0.0) {
+        let first = fixed.iter().find(|g| g.stuck > 0.0).map_or(w.dt, |g| g.dt);
+        format!(
+            "with it, none below dt = {}, but still up to {} per run (at dt = {}), where overlaps \
+             deeper than a step's travel are pushed back in by third particles",
+            num(first),
+            num(w.stuck),
+            num(w.dt)
+        )
     } else {
         "with it, none at any dt".to_string()
     };
