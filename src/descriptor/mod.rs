@@ -10,5 +10,6 @@ pub mod locate;
 pub mod overrides;
 pub mod sweep;
 pub mod validate;
+pub mod validate_integrator;
 pub mod validate_observe;
 pub mod validate_scene;

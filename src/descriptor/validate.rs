@@ -24,6 +24,7 @@ pub fn point(d: &Descriptor) -> Check {
     run(d)?;
     let scene = resolved(&d.scene)?;
     crate::descriptor::validate_scene::scene(&scene)?;
+    crate::descriptor::validate_integrator::integrator(d, &scene)?;
     crate::descriptor::validate_observe::observe(d, &scene)?;
     crate::descriptor::validate_observe::analysis(d, &scene)
 }

@@ -79,6 +79,13 @@ pub trait Dynamics<const D: usize, O: Observer<D>> {
 
     /// Hand back the observer when the run is over.
     fn into_observer(self: Box<Self>) -> O;
+
+    /// What this method measures about its own errors, as named scalars for
+    /// the run's results (a stepper's overlaps, say); the exact engine has
+    /// none.
+    fn diagnostics(&self) -> Vec<(&'static str, f64)> {
+        Vec::new()
+    }
 }
 
 /// The exact event-driven engine. Each method forwards to the inherent one;

@@ -16,6 +16,7 @@ mod prefetch;
 pub mod queue;
 mod save;
 pub mod simulation;
+pub mod stepper;
 pub mod thermal;
 pub mod vector;
 
@@ -27,6 +28,7 @@ pub use observer::{Observer, PairCollision, Snapshot, WallHit};
 pub use particle::{Particle, Shape};
 pub use save::{FORMAT_VERSION, SaveError};
 pub use simulation::{Counts, Simulation, Stop, degrees_of_freedom};
+pub use stepper::Stepper;
 
 /// The engine for each dimension: a chain of neighbours in 1D, neighbour
 /// lists above; `WithPlane` for 2D/3D systems with a piston wall.

@@ -123,6 +123,42 @@ pub struct RunSection {
     /// an evenly strided subset of at most 4000 points per series and run.
     #[serde(default, skip_serializing_if = "is_false")]
     pub full_series: bool,
+    /// What moves the particles: the exact event-driven engine (default) or
+    /// the Imperial project's fixed step of `dt`.
+    #[serde(default, skip_serializing_if = "Integrator::is_exact")]
+    pub integrator: Integrator,
+    /// The fixed step's length (simulated time); only with a fixed step.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub dt: Option<f64>,
+}
+
+/// `[run] integrator`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Integrator {
+    /// Event-driven: every collision at its exact time.
+    #[default]
+    Exact,
+    /// Move by `dt`, then bounce overlapping pairs and wall overlaps that
+    /// approach (the Imperial project's method with its sticking fix).
+    FixedStep,
+    /// The same without the approach check: the seeds' first version, whose
+    /// overlapping pairs can stick together.
+    FixedStepNaive,
+}
+
+impl Integrator {
+    pub fn is_exact(&self) -> bool {
+        *self == Integrator::Exact
+    }
+    /// The name a descriptor uses.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Integrator::Exact => "exact",
+            Integrator::FixedStep => "fixed-step",
+            Integrator::FixedStepNaive => "fixed-step-naive",
+        }
+    }
 }
 
 fn is_false(b: &bool) -> bool {

@@ -1,15 +1,17 @@
 //! One run: scene -> dynamics -> observers -> analyses -> RunOutput.
 //!
 //! The run loop (`simulate`) is written once against `engine::Dynamics`;
-//! which integrator moves the particles is decided by the factory the
-//! dimension picks (`rods` or `balls`), and nowhere else. When the runner
+//! which integrator moves the particles is decided by `[run] integrator`
+//! and the factory the dimension picks (`rods` or `balls`), and nowhere
+//! else. When the runner
 //! gives the run a checkpoint place (`checkpoint.rs`), the loop advances in
 //! short stretches and saves the run's state every few minutes of wall time,
 //! and a run that finds its checkpoint continues from it. A stretch ends at
 //! a time or a collision count, which the engine resumes from exactly as if
 //! it had not stopped, so the results are the same bit for bit.
 
-use crate::engine::{Chain, Dynamics, NeighbourList, Persist, Simulation, Stop};
+use crate::engine::{Chain, Dynamics, NeighbourList, Persist, Simulation, Stepper, Stop};
+use crate::model::descriptor::{Integrator, RunSection};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::observe::{self, Context, ObserverSet};
@@ -38,6 +40,25 @@ pub fn run(spec: &RunSpec) -> anyhow::Result<RunOutput> {
 pub trait Checkpointable<const D: usize>: Dynamics<D, ObserverSet<D>> {
     /// The full state in the engine's save format (`engine::save`).
     fn save_state(&self) -> std::io::Result<Vec<u8>>;
+    /// False for dynamics without a save format: their runs are not
+    /// checkpointed (a rerun starts them over).
+    fn can_save(&self) -> bool {
+        true
+    }
+}
+
+/// The fixed-step method has no save format: its runs are short (it is the
+/// accuracy study's yardstick) and start over when interrupted.
+impl<const D: usize> Checkpointable<D> for Stepper<D, ObserverSet<D>> {
+    fn save_state(&self) -> std::io::Result<Vec<u8>> {
+        Err(std::io::Error::new(
+            std::io::ErrorKind::Unsupported,
+            "a fixed-step run has no save format",
+        ))
+    }
+    fn can_save(&self) -> bool {
+        false
+    }
 }
 
 impl<const D: usize, N: Persist<D>> Checkpointable<D> for Simulation<D, N, ObserverSet<D>> {
@@ -54,6 +75,39 @@ type Engine<const D: usize> = Box<dyn Checkpointable<D>>;
 /// its random stream (thermal walls), or continues the saved state given.
 type Factory<const D: usize> =
     fn(&scene::Built<D>, ObserverSet<D>, u64, Option<&[u8]>) -> anyhow::Result<Engine<D>>;
+
+/// The integrator `[run]` asks for: a fixed step, or the dimension's exact
+/// engine (which alone continues a saved state).
+fn dynamics<const D: usize>(
+    run: &RunSection,
+    exact: Factory<D>,
+    built: &scene::Built<D>,
+    observers: ObserverSet<D>,
+    seed: u64,
+    saved: Option<&[u8]>,
+) -> anyhow::Result<Engine<D>> {
+    let approach_check = match run.integrator {
+        Integrator::Exact => return exact(built, observers, seed, saved),
+        Integrator::FixedStep => true,
+        Integrator::FixedStepNaive => false,
+    };
+    if saved.is_some() {
+        bail!("a fixed-step run cannot continue from a checkpoint");
+    }
+    let dt = run
+        .dt
+        .ok_or_else(|| anyhow!("`run.dt`: a fixed step needs its length"))?;
+    let stepper = Stepper::new(
+        built.particles.clone(),
+        built.sim_box,
+        observers,
+        seed,
+        dt,
+        approach_check,
+    )
+    .context("the scene cannot be stepped")?;
+    Ok(Box::new(stepper))
+}
 
 /// Rods: the event-driven engine with a chain of neighbours.
 fn rods(
@@ -185,6 +239,10 @@ fn save<const D: usize>(
     phase: Phase,
     clock: &mut Clock,
 ) -> anyhow::Result<()> {
+    if !sim.can_save() {
+        clock.place = None;
+        return Ok(());
+    }
     let Some(observers) = sim.observer_mut().save_state() else {
         clock.place = None;
         return Ok(());
@@ -242,7 +300,15 @@ fn simulate<const D: usize>(
     let resumed = place.as_ref().and_then(checkpoint::read).and_then(|saved| {
         let mut set = observers().ok()?;
         set.restore_state(&saved.observers).ok()?;
-        let sim = factory(&built, set, engine_seed, Some(&saved.engine)).ok()?;
+        let sim = dynamics(
+            &d.run,
+            factory,
+            &built,
+            set,
+            engine_seed,
+            Some(&saved.engine),
+        )
+        .ok()?;
         Some((sim, saved))
     });
     let (mut sim, phase, wall_before, cpu_before) = match resumed {
@@ -251,7 +317,7 @@ fn simulate<const D: usize>(
             (sim, saved.phase, saved.wall_seconds, saved.cpu_seconds)
         }
         None => (
-            factory(&built, observers()?, engine_seed, None)?,
+            dynamics(&d.run, factory, &built, observers()?, engine_seed, None)?,
             Phase::Equilibrating,
             0.0,
             0.0,
@@ -324,6 +390,7 @@ fn simulate<const D: usize>(
     };
     let energy1 = sim.kinetic_energy();
     let thermal = sim_box.has_thermal_walls();
+    let diagnostics = sim.diagnostics();
     sim.into_observer().finish(&ctx, &mut out);
     if !thermal {
         out.scalars.push((
@@ -331,6 +398,8 @@ fn simulate<const D: usize>(
             (energy1 - energy0).abs() / energy0.max(f64::MIN_POSITIVE),
         ));
     }
+    out.scalars
+        .extend(diagnostics.into_iter().map(|(n, v)| (n.to_string(), v)));
     let finished = studies::Finished {
         descriptor: d,
         start: Start::of(&built),

@@ -161,6 +161,51 @@ placement = { kind = "random" }
 velocities = { kind = "equal", velocity = [0.5, 0.5] }
 "#,
     },
+    Preset {
+        name: "disks-dilute",
+        about: "A dilute gas: 100 disks of diameter 1 in a 40 x 40 box with hard walls (packing fraction \
+                0.05), Maxwellian at kT = 1; the accuracy study's easy case for a fixed step",
+        toml: r#"
+dimension = 2
+box = [40.0, 40.0]
+boundary = ["walls", "walls"]
+species = [{ name = "disk", count = 100, mass = 1.0, radius = 0.5 }]
+placement = { kind = "random" }
+velocities = { kind = "maxwell", temperature = 1.0 }
+"#,
+    },
+    Preset {
+        name: "disks-dense",
+        about: "A dense gas: 64 disks of diameter 1 in an 11.2 x 11.2 box with hard walls (packing \
+                fraction 0.4), Maxwellian at kT = 1; a collision every ~0.07 per disk, the accuracy \
+                study's hard case for a fixed step",
+        toml: r#"
+dimension = 2
+box = [11.209982432795858, 11.209982432795858]
+boundary = ["walls", "walls"]
+species = [{ name = "disk", count = 64, mass = 1.0, radius = 0.5 }]
+placement = { kind = "random" }
+velocities = { kind = "maxwell", temperature = 1.0 }
+"#,
+    },
+    Preset {
+        name: "rod-piston",
+        about: "A piston of mass 10 and diameter 1 between two gases of ten rods of diameter 1 (masses 1 \
+                left, 2 right) in a box of 40 with hard walls, Maxwellian at kT = 1, the piston starting \
+                with 10 kT: MacKay's piston with rods a fixed step can see (point rods never overlap)",
+        toml: r#"
+dimension = 1
+box = [40.0]
+boundary = ["walls"]
+species = [
+  { name = "light", count = 10, mass = 1.0, radius = 0.5, region = { from = [0.0], to = [0.5] } },
+  { name = "heavy", count = 10, mass = 2.0, radius = 0.5, region = { from = [0.5], to = [1.0] } },
+]
+placement = { kind = "random" }
+velocities = { kind = "maxwell", temperature = 1.0 }
+piston = { mass = 10.0, position = 0.5, radius = 0.5, energy = 10.0 }
+"#,
+    },
 ];
 
 pub fn list() -> &'static [Preset] {

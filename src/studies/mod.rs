@@ -3,6 +3,7 @@
 //! its results and its report section. Registering one is a line in
 //! `REGISTRY`; a descriptor asks for it as `[analysis.<name>]`.
 
+pub mod accuracy;
 pub mod equilibrium;
 pub mod expansion;
 pub mod mixing;
@@ -26,6 +27,7 @@ pub const REGISTRY: &[&dyn Study] = &[
     &expansion::Expansion,
     &mixing::Mixing,
     &equilibrium::Equilibrium,
+    &accuracy::Accuracy,
 ];
 
 /// A finished run as a study sees it: its descriptor, the scene as built

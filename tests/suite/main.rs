@@ -2,6 +2,9 @@
 //! polars instead of one per file (the build and CI time this saves is in
 //! the README). Shared helpers are the modules without tests.
 
+mod accuracy_convergence;
+mod accuracy_stepper;
+mod accuracy_study;
 mod common;
 mod engine_collision_rule;
 mod engine_dynamics;

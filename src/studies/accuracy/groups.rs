@@ -1,0 +1,137 @@
+//! The runs grouped as the section compares them: per scene, the exact
+//! engine's runs and each (integrator, dt) of the fixed step, with the
+//! ensemble statistics of every quantity the section shows.
+
+use crate::model::descriptor::Integrator;
+use crate::model::run_output::RunOutput;
+use crate::model::run_spec::RunSpec;
+use crate::stats::summary::Stats;
+
+/// The runs of one scene with one integrator and step.
+pub struct Group {
+    pub scene: String,
+    pub integrator: Integrator,
+    /// NaN for the exact engine.
+    pub dt: f64,
+    /// Simulated time of each run (NaN for runs stopped by collisions).
+    pub duration: f64,
+    /// Whether the scene has a piston (its frequency is then the headline).
+    pub piston: bool,
+    pub runs: usize,
+    /// Wall pressure over each run's own kT.
+    pub pressure: Stats,
+    pub collision_rate: Stats,
+    pub frequency: Stats,
+    /// Mean over runs of |E_end - E_start| / E_start.
+    pub energy_drift: f64,
+    /// Over all runs: the deepest overlap (fraction of the contact
+    /// distance), the mean depth, the longest overlap in steps.
+    pub depth_max: f64,
+    pub depth_mean: f64,
+    pub longest: f64,
+    /// Stuck pairs (overlap episodes longer than a pass through) per run.
+    pub stuck: f64,
+    /// Repeat collisions over all collisions.
+    pub repeat_share: f64,
+    /// Mean CPU seconds of one run.
+    pub cpu: f64,
+}
+
+/// A scene's name: its preset, or "scene".
+pub fn scene_of(spec: &RunSpec) -> String {
+    spec.descriptor
+        .scene
+        .preset
+        .clone()
+        .unwrap_or_else(|| "scene".into())
+}
+
+/// Groups in the order their first run comes in the plan.
+pub fn groups(runs: &[(RunSpec, RunOutput)]) -> Vec<Group> {
+    let mut keys: Vec<(String, Integrator, u64, u64)> = Vec::new();
+    let key = |s: &RunSpec| {
+        let dt = s.descriptor.run.dt.unwrap_or(f64::NAN);
+        let duration = s.descriptor.run.duration.unwrap_or(f64::NAN);
+        (
+            scene_of(s),
+            s.descriptor.run.integrator,
+            dt.to_bits(),
+            duration.to_bits(),
+        )
+    };
+    for (s, _) in runs {
+        let k = key(s);
+        if !keys.contains(&k) {
+            keys.push(k);
+        }
+    }
+    keys.into_iter()
+        .map(|k| {
+            let members: Vec<&RunOutput> = runs
+                .iter()
+                .filter(|(s, _)| key(s) == k)
+                .map(|(_, o)| o)
+                .collect();
+            let mut g = group(k.0.clone(), k.1, f64::from_bits(k.2), &members);
+            g.duration = f64::from_bits(k.3);
+            g.piston = runs
+                .iter()
+                .find(|(s, _)| key(s) == k)
+                .and_then(|(s, _)| crate::scene::resolve(&s.descriptor.scene).ok())
+                .is_some_and(|scene| scene.piston.is_some());
+            g
+        })
+        .collect()
+}
+
+fn group(scene: String, integrator: Integrator, dt: f64, runs: &[&RunOutput]) -> Group {
+    let values = |name: &str| -> Vec<f64> {
+        runs.iter()
+            .filter_map(|o| o.scalar(name))
+            .filter(|v| v.is_finite())
+            .collect()
+    };
+    let mean = |v: &[f64]| {
+        if v.is_empty() {
+            f64::NAN
+        } else {
+            v.iter().sum::<f64>() / v.len() as f64
+        }
+    };
+    let max = |v: &[f64]| v.iter().copied().fold(f64::NAN, f64::max);
+    let collisions: u64 = runs.iter().map(|o| o.collisions).sum();
+    let repeats: f64 = values("repeat_collisions").iter().sum();
+    Group {
+        scene,
+        integrator,
+        dt,
+        duration: f64::NAN,
+        piston: false,
+        runs: runs.len(),
+        pressure: Stats::of(&values("beta_pressure")),
+        collision_rate: Stats::of(&values("collision_rate")),
+        frequency: Stats::of(&values("piston_frequency")),
+        energy_drift: mean(&values("energy_drift")),
+        depth_max: max(&values("overlap_depth_max")),
+        depth_mean: mean(&values("overlap_depth_mean")),
+        longest: max(&values("overlap_steps_max")),
+        stuck: mean(&values("stuck_pairs")),
+        repeat_share: repeats / (collisions.max(1) as f64),
+        cpu: mean(&runs.iter().map(|o| o.cpu_seconds).collect::<Vec<_>>()),
+    }
+}
+
+/// The relative error of a group's `stat` against the exact engine's on the
+/// same scene, |a / b - 1|, with its standard error; None when either is
+/// missing.
+pub fn error(a: &Stats, b: &Stats) -> Option<(f64, f64)> {
+    if a.n == 0 || b.n == 0 || b.mean == 0.0 || !(a.mean.is_finite() && b.mean.is_finite()) {
+        return None;
+    }
+    let ratio = a.mean / b.mean;
+    let rel = |s: &Stats| {
+        if s.n > 1 { s.stderr / s.mean } else { 0.0 }
+    };
+    let se = ratio.abs() * (rel(a).powi(2) + rel(b).powi(2)).sqrt();
+    Some(((ratio - 1.0).abs(), se))
+}
