@@ -13,8 +13,10 @@ use super::positions::Positions;
 use super::scaled_velocity_x::ScaledVelocityX;
 use super::temperature::{MeanTemperature, Temperature};
 use super::virial_pressure::VirialPressure;
+use super::virial_pressure_series::VirialPressureSeries;
 use super::wall_heat::WallHeat;
 use super::wall_pressure::WallPressure;
+use super::wall_pressure_series::WallPressureSeries;
 use crate::model::need::Need;
 
 /// Builds one observable's part in dimension `D`.
@@ -43,6 +45,8 @@ catalogue![
     GasEnergyBySide,
     Positions,
     LeftFraction,
+    WallPressureSeries,
+    VirialPressureSeries,
     WallPressure,
     VirialPressure,
     MeanTemperature,

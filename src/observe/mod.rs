@@ -20,8 +20,10 @@ mod positions;
 mod scaled_velocity_x;
 mod temperature;
 mod virial_pressure;
+mod virial_pressure_series;
 mod wall_heat;
 mod wall_pressure;
+mod wall_pressure_series;
 
 use crate::engine::Observer;
 use crate::model::run_output::RunOutput;
