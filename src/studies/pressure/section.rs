@@ -420,10 +420,10 @@ fixing the energy fixes only the momenta, and the positions are distributed as i
 same N and V. With kT = 2K/(d(N − 1)) the mean squared relative velocity of a pair is exactly the canonical \
 2d kT/m, so the collision virial has its canonical value too. The one difference is the ideal part, 2K/d = \
 (N − 1) kT where the canonical has N kT: Z = 1 + W/(d N kT) corrects it (uncorrected, Z would be 1/N low). What \
-is left is the canonical finite-size effect of a periodic box whose N is fixed, of order 1/N (about −0.7/N for \
-disks and −1.5/N for spheres at η = 0.3): the study measures Z at several N and extrapolates. This, not the \
-equations or the statistics, is why the spheres at η = 0.3 and N = 256 sit about 0.15 % (3 standard errors \
-of the first slice) below Carnahan-Starling-Kolafa. \
+is left is the canonical finite-size effect of a periodic box whose N is fixed, of order 1/N (the full study \
+measured −0.76/N for disks and −1.1/N for spheres at η = 0.3): the study measures Z at several N and \
+extrapolates. This, not the equations or the statistics, is why the spheres at η = 0.3 and N = 256 sit about \
+0.14 % below Carnahan-Starling-Kolafa. \
 **Starts and equilibration.** Rods start from the exact equilibrium distribution (uniform gaps) and nothing is \
 discarded. Dilute disks and spheres start from random insertion; dense ones (disks from η = 0.5, spheres from \
 0.3) from Lubachevsky-Stillinger compression, never random insertion. Each run then discards the time in \
