@@ -26,8 +26,10 @@ use super::velocities::Velocities;
 use super::velocity_x_each::VelocityXEach;
 use super::velocity_x_halves::VelocityXHalves;
 use super::virial_pressure::VirialPressure;
+use super::virial_pressure_series::VirialPressureSeries;
 use super::wall_heat::WallHeat;
 use super::wall_pressure::WallPressure;
+use super::wall_pressure_series::WallPressureSeries;
 use crate::model::need::Need;
 
 /// Builds one observable's part in dimension `D`.
@@ -58,6 +60,8 @@ catalogue![
     Velocities,
     SpeedSpread,
     LeftFraction,
+    WallPressureSeries,
+    VirialPressureSeries,
     WallPressure,
     VirialPressure,
     MeanTemperature,

@@ -38,8 +38,10 @@ mod velocities;
 mod velocity_x_each;
 mod velocity_x_halves;
 mod virial_pressure;
+mod virial_pressure_series;
 mod wall_heat;
 mod wall_pressure;
+mod wall_pressure_series;
 
 use crate::engine::Observer;
 use crate::model::run_output::RunOutput;

@@ -414,7 +414,8 @@ fn simulate<const D: usize>(
         // results (deterministic), its seconds a timing like the run's.
         out.scalars
             .push(("prepare_collisions".into(), prep.collisions as f64));
-        out.scalars.push(("packing_fraction".into(), prep.phi));
+        out.scalars
+            .push(("prepared_packing_fraction".into(), prep.phi));
         out.prepare_seconds = prep.seconds;
     }
     out.wall_seconds = clock.wall();

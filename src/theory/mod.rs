@@ -1,10 +1,10 @@
 //! Theory predictions, one file each, set beside measurements in the summary.
 
 pub mod carnahan_starling;
+pub mod carnahan_starling_kolafa;
 pub mod disk_virial;
 pub mod expansion;
 pub mod henderson;
-pub mod kolafa_labik_malijevsky;
 pub mod maxwell;
 pub mod microcanonical;
 pub mod mixing;
@@ -13,4 +13,6 @@ pub mod piston;
 pub mod piston_equilibrium;
 pub mod piston_exchange;
 pub mod piston_room;
+pub mod sphere_virial;
 pub mod tonks;
+pub mod virial_series;

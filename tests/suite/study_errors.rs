@@ -422,13 +422,10 @@ fn observables_and_analyses() {
         ),
         case(
             "a scalar listed as a series",
-            edit(
-                "series = [\"piston_position\"]",
-                "series = [\"wall_pressure\"]",
-            ),
+            edit("series = [\"piston_position\"]", "series = [\"wall_heat\"]"),
             &[
                 "`observe.series.0`",
-                "`wall_pressure` is a scalars observable: list it under `scalars`",
+                "`wall_heat` is a scalars observable: list it under `scalars`",
             ],
         ),
         case(

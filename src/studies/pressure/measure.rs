@@ -5,23 +5,64 @@
 //! - Walls (`wall_pressure`, per unit wall area): Z = P V / (N kT), f = dN.
 //!   For rods the box length is the volume: the exact finite-N result is
 //!   P (L - N sigma) = N kT, i.e. Tonks' Z = 1/(1 - eta) with eta = N sigma/L.
-//! - Periodic (`virial_pressure`): P V = 2K/d + W/d, W the collision virial
-//!   per unit time. Momentum is conserved, so f = d(N - 1): the centre of mass
-//!   carries no heat and the mechanical ideal part 2K/d is (N - 1) kT. The
-//!   canonical ensemble the equations of state describe has N kT there, so Z
-//!   takes the ideal part as 1 and the excess from the virial at the run's
-//!   temperature: Z = 1 + W / (d N kT), W / d = P V - 2K/d.
+//! - Virial (`virial_pressure`): P V = 2K/d + W/d, W the collision virial
+//!   per unit time. In a periodic box momentum is conserved, so f = d(N - 1):
+//!   the centre of mass carries no heat and the mechanical ideal part 2K/d
+//!   is (N - 1) kT. The canonical ensemble the equations of state describe
+//!   has N kT there, so Z takes the ideal part as 1 and the excess from the
+//!   virial at the run's temperature: Z = 1 + W / (d N kT), W / d = P V - 2K/d.
+//!   With walls f = dN and this is P V / (N kT) again, but the virial
+//!   theorem then has a wall term too: a wall pushes a particle at its
+//!   centre, a radius from the wall, so 2K + W = P_wall (d V - sigma A / 2)
+//!   with A the walls' total area and sigma the diameter. The virial's Z is
+//!   that of P_wall, so the two estimates measure the same thing.
+//!
+//! With the pressure series (`[observe] series`), Z is the mean over the
+//! sampling intervals left after the MSER cut (`equilibration`), with a
+//! block-average error bar (`blocks`); without, it is the run's scalar.
 
-use super::packing;
+use super::{blocks, equilibration, packing};
 use crate::engine::Particle;
 use crate::model::run_output::RunOutput;
 use crate::observe::Context;
 
-/// What one run adds: Z, packing fraction and number density.
+/// What one run adds.
 pub struct Measured {
+    /// Z from the walls where there are walls, else from the virial.
     pub z: f64,
+    pub z_wall: f64,
+    pub z_virial: f64,
     pub packing_fraction: f64,
     pub density: f64,
+    /// Time the MSER rule cut from the start of the recorded series.
+    pub cut_time: f64,
+    /// Block-average standard error of `z`, the block length (time) it
+    /// used and the estimate with blocks twice as long over it.
+    pub block_stderr: f64,
+    pub block_time: f64,
+    pub block_doubling: f64,
+    /// Mean of the second half of the kept series minus the first, over
+    /// the error of that difference (about N(0, 1) when equilibrated).
+    pub drift: f64,
+}
+
+/// Z from a pressure `p`: walls or virial (see the module doc).
+struct Scale {
+    volume: f64,
+    n: f64,
+    kt: f64,
+    ideal: f64,
+    /// d V / (d V - sigma A / 2): 1 without walls.
+    wall_term: f64,
+}
+
+impl Scale {
+    fn wall(&self, p: f64) -> f64 {
+        p * self.volume / (self.n * self.kt)
+    }
+    fn virial(&self, p: f64) -> f64 {
+        1.0 + (p * self.wall_term * self.volume - self.ideal) / (self.n * self.kt)
+    }
 }
 
 pub fn measure<const D: usize>(
@@ -30,24 +71,85 @@ pub fn measure<const D: usize>(
     out: &RunOutput,
 ) -> Result<Measured, String> {
     let movable: Vec<&Particle<D>> = particles.iter().filter(|p| p.inv_mass > 0.0).collect();
-    let n = movable.len() as f64;
     let kinetic: f64 = movable
         .iter()
         .map(|p| 0.5 * p.vel.iter().map(|v| v * v).sum::<f64>() / p.inv_mass)
         .sum();
-    let kt = 2.0 * kinetic / ctx.degrees_of_freedom;
-    let volume = ctx.volume;
-    let (packing_fraction, density) = packing::of_particles(particles, volume);
-    let z = if let Some(p) = out.scalar("wall_pressure") {
-        p * volume / (n * kt)
-    } else if let Some(p) = out.scalar("virial_pressure") {
-        1.0 + (p * volume - 2.0 * kinetic / D as f64) / (n * kt)
-    } else {
-        return Err("the pressure analysis needs `wall_pressure` (walls) or `virial_pressure` (periodic) in [observe] scalars".into());
+    let n = movable.len() as f64;
+    // Mean diameter: exact for one size, which the study uses.
+    let sigma = movable.iter().map(|p| 2.0 * p.radius).sum::<f64>() / n;
+    let dv = D as f64 * ctx.volume;
+    let scale = Scale {
+        volume: ctx.volume,
+        n,
+        kt: 2.0 * kinetic / ctx.degrees_of_freedom,
+        ideal: 2.0 * kinetic / D as f64,
+        wall_term: dv / (dv - 0.5 * sigma * ctx.wall_area),
     };
-    Ok(Measured {
-        z,
+    let (packing_fraction, density) = packing::of_particles(particles, ctx.volume);
+    let series = |name: &str, f: &dyn Fn(f64) -> f64| -> Option<(Vec<f64>, f64)> {
+        let s = out.series(name)?;
+        let dt = if s.t.len() > 1 {
+            s.t[1] - s.t[0]
+        } else {
+            f64::NAN
+        };
+        Some((s.value.iter().map(|&p| f(p)).collect(), dt))
+    };
+    let wall = series("wall_pressure", &|p| scale.wall(p));
+    let virial = series("virial_pressure", &|p| scale.virial(p));
+    let scalar = |name: &str, f: &dyn Fn(f64) -> f64| out.scalar(name).map(f);
+    let z_wall_scalar = scalar("wall_pressure", &|p| scale.wall(p));
+    let z_virial_scalar = scalar("virial_pressure", &|p| scale.virial(p));
+
+    let mut m = Measured {
+        z: f64::NAN,
+        z_wall: z_wall_scalar.unwrap_or(f64::NAN),
+        z_virial: z_virial_scalar.unwrap_or(f64::NAN),
         packing_fraction,
         density,
-    })
+        cut_time: f64::NAN,
+        block_stderr: f64::NAN,
+        block_time: f64::NAN,
+        block_doubling: f64::NAN,
+        drift: f64::NAN,
+    };
+    let main = wall.as_ref().or(virial.as_ref());
+    if let Some((z, dt)) = main {
+        let cut = equilibration::cut(z);
+        let kept = &z[cut..];
+        m.z = mean(kept);
+        m.cut_time = cut as f64 * dt;
+        if let Some(b) = blocks::blocked(kept) {
+            m.block_stderr = b.stderr;
+            m.block_time = b.length as f64 * dt;
+            m.block_doubling = b.doubling;
+        }
+        m.drift = drift(kept);
+        // The series' means over the same kept stretch.
+        if let Some((w, _)) = &wall {
+            m.z_wall = mean(&w[cut..]);
+        }
+        if let Some((v, _)) = &virial {
+            m.z_virial = mean(&v[cut..]);
+        }
+    } else {
+        m.z = z_wall_scalar.or(z_virial_scalar).ok_or(
+            "the pressure analysis needs `wall_pressure` (walls) or `virial_pressure` in [observe] scalars or series",
+        )?;
+    }
+    Ok(m)
+}
+
+fn mean(x: &[f64]) -> f64 {
+    x.iter().sum::<f64>() / x.len() as f64
+}
+
+/// Second half's mean minus the first's, in units of its block error.
+fn drift(x: &[f64]) -> f64 {
+    let (a, b) = x.split_at(x.len() / 2);
+    match (blocks::blocked(a), blocks::blocked(b)) {
+        (Some(ea), Some(eb)) => (mean(b) - mean(a)) / ea.stderr.hypot(eb.stderr),
+        _ => f64::NAN,
+    }
 }

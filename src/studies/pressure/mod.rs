@@ -3,9 +3,15 @@
 //! compressibility factor Z = beta P / rho against the packing fraction,
 //! beside the exact (rods) and published (disks, spheres) equations.
 
+mod blocks;
+mod charts;
 mod equations;
+mod equilibration;
+mod finite_size;
 mod measure;
 mod packing;
+mod phases;
+mod points;
 mod section;
 
 use super::{Finished, Start, Study};
@@ -17,8 +23,21 @@ use crate::model::run_spec::RunSpec;
 pub use equations::{Equation, of as equations};
 pub use packing::of_scene as described_packing;
 
-/// The results it adds to each run.
-pub const RESULTS: &[&str] = &["Z", "packing_fraction", "density"];
+/// The results it adds to each run (those a run cannot measure are left
+/// out: `Z_wall` without walls, the block and equilibration results
+/// without a pressure series).
+pub const RESULTS: &[&str] = &[
+    "Z",
+    "Z_wall",
+    "Z_virial",
+    "packing_fraction",
+    "density",
+    "equilibration_cut",
+    "Z_block_stderr",
+    "block_time",
+    "block_doubling",
+    "Z_drift",
+];
 
 /// The pressure study as a plug-in.
 pub struct Pressure;
@@ -28,7 +47,7 @@ impl Study for Pressure {
         "pressure"
     }
     fn about(&self) -> &'static str {
-        "compressibility factor Z = βP/ρ from the wall or virial pressure against packing fraction, beside Tonks (rods), Henderson and the virial series (disks), Kolafa-Labík-Malijevský and Carnahan-Starling (spheres)"
+        "compressibility factor Z = βP/ρ from the wall or virial pressure against packing fraction, with equilibration cuts, block-average errors and the 1/N extrapolation, beside Tonks (rods), the virial series and Henderson (disks), Carnahan-Starling-Kolafa, the virial series and Carnahan-Starling (spheres)"
     }
     fn results(&self) -> &'static [&'static str] {
         RESULTS
@@ -43,11 +62,23 @@ impl Study for Pressure {
             return Err("the pressure analysis needs a scene without a piston".into());
         }
         let m = m?;
-        out.scalars.extend([
-            ("Z".to_string(), m.z),
-            ("packing_fraction".to_string(), m.packing_fraction),
-            ("density".to_string(), m.density),
-        ]);
+        let values = [
+            m.z,
+            m.z_wall,
+            m.z_virial,
+            m.packing_fraction,
+            m.density,
+            m.cut_time,
+            m.block_stderr,
+            m.block_time,
+            m.block_doubling,
+            m.drift,
+        ];
+        for (name, v) in RESULTS.iter().zip(values) {
+            if !v.is_nan() {
+                out.scalars.push((name.to_string(), v));
+            }
+        }
         Ok(())
     }
     fn theory(&self, d: &Descriptor, result: &str) -> Option<f64> {
@@ -56,7 +87,16 @@ impl Study for Pressure {
         }
         let scene = crate::scene::resolve(&d.scene).ok()?;
         let eta = packing::of_scene(&scene)?;
-        Some((equations::of(scene.dimension().ok()?)[0].z)(eta))
+        let dimension = scene.dimension().ok()?;
+        // Walls in 2D and 3D add a surface term that no bulk equation has.
+        let walled = scene
+            .boundary
+            .as_ref()
+            .is_none_or(|b| b.contains(&crate::model::scene::Boundary::Walls));
+        if dimension > 1 && walled {
+            return None;
+        }
+        Some((equations::of(dimension)[0].z)(eta))
     }
     fn section(
         &self,

@@ -1,0 +1,259 @@
+//! The section's figures as chart data: Z against packing fraction with the
+//! equations of state, Z over the reference equation, pressure against time,
+//! Z against 1/N, and the dense disks' pressure.
+
+use super::equations::{self, Equation};
+use super::finite_size::Fit;
+use super::points::Point;
+use crate::model::chart::{ChartSpec, Layer, Paint, colour};
+
+pub const NAMES: [&str; 3] = [
+    "Rods (1D, walls)",
+    "Disks (2D, periodic)",
+    "Spheres (3D, periodic)",
+];
+
+fn curve(top: f64, f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
+    (0..=200)
+        .map(|k| {
+            let eta = top * k as f64 / 200.0;
+            (eta, f(eta))
+        })
+        .collect()
+}
+
+/// The bulk points of dimension `d`: periodic boxes, and rods.
+fn bulk(all: &[Point], d: usize) -> Vec<&Point> {
+    all.iter()
+        .filter(|p| p.dimension == d && (d == 1 || !p.walls))
+        .collect()
+}
+
+pub fn z_chart(all: &[Point]) -> ChartSpec {
+    let top = all.iter().map(|p| p.eta).fold(0.0, f64::max) * 1.02;
+    let mut layers = vec![Layer::Line {
+        points: vec![(0.0, 1.0), (top, 1.0)],
+        paint: Paint::solid((0, 0, 0)),
+        width: 1,
+        dashed: true,
+        label: Some("ideal gas".into()),
+    }];
+    for d in 1..=3 {
+        let pts = bulk(all, d);
+        if pts.is_empty() {
+            continue;
+        }
+        let paint = colour(d - 1);
+        let reach = pts.iter().map(|p| p.eta).fold(0.0, f64::max) * 1.02;
+        for (i, e) in equations::of(d).iter().enumerate() {
+            // Each curve up to where it is meant to hold (rods: to the data).
+            let end = reach.min(e.holds_below.max(0.3) + 0.05);
+            layers.push(Layer::Line {
+                points: curve(end, e.z),
+                paint: paint.faded(if i == 0 { 1.0 } else { 0.6 }),
+                width: 1,
+                dashed: i > 0,
+                label: Some(format!("{}D: {}", d, e.name)),
+            });
+        }
+        markers(&mut layers, &pts, paint, NAMES[d - 1], |p| {
+            (p.z.mean, p.error().0)
+        });
+    }
+    ChartSpec {
+        title: "Equation of state: Z = βP/ρ".into(),
+        x_label: "packing fraction η".into(),
+        y_label: "Z = βP/ρ".into(),
+        y_log: true,
+        layers,
+        ..Default::default()
+    }
+}
+
+pub fn deviation_chart(all: &[Point]) -> ChartSpec {
+    let mut layers = Vec::new();
+    for d in 1..=3 {
+        // Fluid points where the reference equation holds.
+        let eqs = equations::of(d);
+        let reference: &Equation = &eqs[0];
+        let pts: Vec<&Point> = bulk(all, d)
+            .into_iter()
+            .filter(|p| p.eta <= reference.holds_below)
+            .collect();
+        if pts.is_empty() {
+            continue;
+        }
+        let paint = colour(d - 1);
+        let reach = pts.iter().map(|p| p.eta).fold(0.0, f64::max) * 1.02;
+        for e in &eqs[1..] {
+            layers.push(Layer::Line {
+                points: curve(reach.min(e.holds_below + 0.05), |eta| {
+                    (e.z)(eta) / (reference.z)(eta) - 1.0
+                }),
+                paint: paint.faded(0.6),
+                width: 1,
+                dashed: true,
+                label: Some(format!("{}D: {}", d, e.name)),
+            });
+        }
+        markers(&mut layers, &pts, paint, NAMES[d - 1], |p| {
+            let r = (reference.z)(p.eta);
+            (p.z.mean / r - 1.0, p.error().0 / r)
+        });
+    }
+    ChartSpec {
+        title: "Z over the reference equation, minus 1 (fluid points, finite N)".into(),
+        x_label: "packing fraction η".into(),
+        y_label: "Z / Z_reference − 1".into(),
+        layers,
+        ..Default::default()
+    }
+}
+
+/// The pressure of a few runs against time, each over its own mean.
+pub fn time_chart(examples: &[(&Point, &str)]) -> ChartSpec {
+    let mut layers = Vec::new();
+    for (i, (p, label)) in examples.iter().enumerate() {
+        let Some((_, t, v)) = &p.example else {
+            continue;
+        };
+        let mean = v.iter().sum::<f64>() / v.len() as f64;
+        layers.push(Layer::Line {
+            points: t.iter().zip(v).map(|(t, v)| (*t, v / mean)).collect(),
+            paint: colour(i).faded(0.7),
+            width: 1,
+            dashed: false,
+            label: Some(label.to_string()),
+        });
+    }
+    ChartSpec {
+        title: "Pressure against time (one replica each, per sampling interval)".into(),
+        x_label: "time t (σ√(m/kT))".into(),
+        y_label: "P(t) / mean P".into(),
+        layers,
+        ..Default::default()
+    }
+}
+
+pub fn finite_size_chart(fits: &[Fit]) -> ChartSpec {
+    let mut layers = Vec::new();
+    for (i, f) in fits.iter().enumerate() {
+        let paint = colour(i);
+        let r = (equations::of(f.dimension)[0].z)(f.eta);
+        let xmax = f.data.iter().map(|d| 1.0 / d.0 as f64).fold(0.0, f64::max);
+        layers.push(Layer::Line {
+            points: (0..=20)
+                .map(|k| {
+                    let x = xmax * k as f64 / 20.0;
+                    (x, (f.z_inf + f.slope * x) / r - 1.0)
+                })
+                .collect(),
+            paint: paint.faded(0.6),
+            width: 1,
+            dashed: true,
+            label: None,
+        });
+        layers.push(Layer::ErrorBars {
+            bars: f
+                .data
+                .iter()
+                .map(|&(n, z, e)| {
+                    (
+                        1.0 / n as f64,
+                        (z - e) / r - 1.0,
+                        z / r - 1.0,
+                        (z + e) / r - 1.0,
+                    )
+                })
+                .chain(std::iter::once((
+                    0.0,
+                    (f.z_inf - f.z_inf_err) / r - 1.0,
+                    f.z_inf / r - 1.0,
+                    (f.z_inf + f.z_inf_err) / r - 1.0,
+                )))
+                .collect(),
+            paint,
+        });
+        layers.push(Layer::Markers {
+            points: f
+                .data
+                .iter()
+                .map(|&(n, z, _)| (1.0 / n as f64, z / r - 1.0))
+                .collect(),
+            paint,
+            label: Some(format!("{}D, η = {:.3}", f.dimension, f.eta)),
+        });
+    }
+    layers.push(Layer::Line {
+        points: vec![(0.0, 0.0), (1.0 / 64.0, 0.0)],
+        paint: Paint::solid((0, 0, 0)),
+        width: 1,
+        dashed: true,
+        label: Some("reference equation".into()),
+    });
+    ChartSpec {
+        title: "Finite size: Z against 1/N, extrapolated to N → ∞ (at 1/N = 0)".into(),
+        x_label: "1/N".into(),
+        y_label: "Z / Z_reference − 1".into(),
+        layers,
+        ..Default::default()
+    }
+}
+
+/// βPσ² = Z ρ of the dense disks of one size, with the fluid series.
+pub fn dense_disks_chart(pts: &[&Point]) -> ChartSpec {
+    let rho = |eta: f64| 4.0 * eta / std::f64::consts::PI;
+    let lo = pts.iter().map(|p| p.eta).fold(1.0, f64::min);
+    let hi = pts.iter().map(|p| p.eta).fold(0.0, f64::max);
+    let fluid = &equations::of(2)[0];
+    let paint = colour(1);
+    let mut layers = vec![Layer::Line {
+        points: (0..=50)
+            .map(|k| {
+                let eta = lo + (hi - lo) * k as f64 / 50.0;
+                (eta, (fluid.z)(eta) * rho(eta))
+            })
+            .collect(),
+        paint: paint.faded(0.5),
+        width: 1,
+        dashed: true,
+        label: Some(format!("fluid: {} (beyond its range)", fluid.name)),
+    }];
+    markers(&mut layers, pts, paint, "disks", |p| {
+        (p.z.mean * rho(p.eta), p.error().0 * rho(p.eta))
+    });
+    ChartSpec {
+        title: format!(
+            "Disks near the liquid-hexatic transition, N = {}",
+            pts.first().map_or(0, |p| p.particles)
+        ),
+        x_label: "packing fraction η".into(),
+        y_label: "βPσ²".into(),
+        layers,
+        ..Default::default()
+    }
+}
+
+fn markers(
+    layers: &mut Vec<Layer>,
+    pts: &[&Point],
+    paint: Paint,
+    label: &str,
+    y: impl Fn(&Point) -> (f64, f64),
+) {
+    layers.push(Layer::ErrorBars {
+        bars: pts
+            .iter()
+            .map(|p| {
+                let (m, e) = y(p);
+                (p.eta, m - e, m, m + e)
+            })
+            .collect(),
+        paint,
+    });
+    layers.push(Layer::Markers {
+        points: pts.iter().map(|p| (p.eta, y(p).0)).collect(),
+        paint,
+        label: Some(label.into()),
+    });
+}

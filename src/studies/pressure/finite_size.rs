@@ -1,0 +1,108 @@
+//! Z against 1/N: points of one dimension and packing fraction (periodic
+//! boxes) with different N, fitted with Z(N) = Z_inf + b/N by weighted
+//! least squares, and Z_inf compared with the reference equation.
+//!
+//! Why 1/N: for hard bodies the simulated ensemble (fixed energy, zero total
+//! momentum) has the canonical configurations at the same N and V (the
+//! potential energy is zero wherever it is defined, so fixing the energy
+//! only fixes the momenta), and with kT = 2K/(d(N - 1)) the collision
+//! virial has its canonical value; the one ensemble term, the ideal part
+//! (N - 1) kT instead of N kT, is corrected in `measure`. What is left is
+//! the canonical finite-size effect of a periodic box of fixed N, whose
+//! density cannot fluctuate on the box's scale: of order 1/N.
+
+use super::points::Point;
+
+/// One group's fit.
+pub struct Fit {
+    pub dimension: usize,
+    pub eta: f64,
+    /// (N, Z, error) of the points fitted.
+    pub data: Vec<(usize, f64, f64)>,
+    pub z_inf: f64,
+    pub z_inf_err: f64,
+    pub slope: f64,
+    pub slope_err: f64,
+    /// Chi-squared and degrees of freedom (0 for two points).
+    pub chi2: f64,
+    pub dof: usize,
+}
+
+/// Packing fractions closer than this are the same (box lengths are
+/// written to 10 digits).
+const SAME_ETA: f64 = 1e-7;
+
+pub fn fits(points: &[Point]) -> Vec<Fit> {
+    let mut groups: Vec<Vec<&Point>> = Vec::new();
+    for p in points.iter().filter(|p| !p.walls && p.z.n >= 2) {
+        match groups
+            .iter_mut()
+            .find(|g| g[0].dimension == p.dimension && (g[0].eta - p.eta).abs() < SAME_ETA)
+        {
+            Some(g) => g.push(p),
+            None => groups.push(vec![p]),
+        }
+    }
+    groups
+        .into_iter()
+        .filter_map(|mut g| {
+            g.sort_by_key(|p| p.particles);
+            g.dedup_by_key(|p| p.particles);
+            (g.len() >= 2).then(|| fit(&g))
+        })
+        .collect()
+}
+
+/// Weighted least squares of Z on x = 1/N.
+fn fit(g: &[&Point]) -> Fit {
+    let data: Vec<(usize, f64, f64)> = g
+        .iter()
+        .map(|p| (p.particles, p.z.mean, p.error().0))
+        .collect();
+    let (mut s, mut sx, mut sy, mut sxx, mut sxy) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for &(n, z, e) in &data {
+        let (x, w) = (1.0 / n as f64, 1.0 / (e * e));
+        s += w;
+        sx += w * x;
+        sy += w * z;
+        sxx += w * x * x;
+        sxy += w * x * z;
+    }
+    let det = s * sxx - sx * sx;
+    let z_inf = (sxx * sy - sx * sxy) / det;
+    let slope = (s * sxy - sx * sy) / det;
+    let chi2 = data
+        .iter()
+        .map(|&(n, z, e)| ((z - z_inf - slope / n as f64) / e).powi(2))
+        .sum();
+    Fit {
+        dimension: g[0].dimension,
+        eta: g[0].eta,
+        z_inf,
+        z_inf_err: (sxx / det).sqrt(),
+        slope,
+        slope_err: (s / det).sqrt(),
+        chi2,
+        dof: data.len() - 2,
+        data,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn exact_line_through_two_points() {
+        // Z(N) = 2 - 0.7/N at N = 64 and 1024, equal errors.
+        let pts: Vec<super::Point> = [64usize, 1024]
+            .iter()
+            .map(|&n| super::super::points::tests::point(2, n, 0.3, 2.0 - 0.7 / n as f64, 1e-3))
+            .collect();
+        let f = super::fits(&pts);
+        assert_eq!(f.len(), 1);
+        assert!((f[0].z_inf - 2.0).abs() < 1e-12);
+        assert!((f[0].slope + 0.7).abs() < 1e-9);
+        // Extrapolated error: (16/15) of the large box's, with the small's.
+        let expected = 1e-3 * ((16.0f64 / 15.0).powi(2) + (1.0f64 / 15.0).powi(2)).sqrt();
+        assert!((f[0].z_inf_err / expected - 1.0).abs() < 1e-9);
+    }
+}

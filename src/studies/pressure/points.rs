@@ -1,0 +1,181 @@
+//! The sweep points as the report sees them: what each point's replicas
+//! measured, pooled, and how the point was started and equilibrated.
+
+use crate::model::run_output::RunOutput;
+use crate::model::run_spec::RunSpec;
+use crate::model::scene::{Boundary, Placement};
+use crate::stats::summary::Stats;
+use std::collections::BTreeMap;
+
+/// Fewest replicas whose spread is used as the error bar; with fewer the
+/// block-average error is used.
+pub const MIN_REPLICAS: u64 = 4;
+
+/// One sweep point.
+pub struct Point {
+    pub dimension: usize,
+    pub particles: usize,
+    pub eta: f64,
+    /// Whether any axis has walls (then Z is the wall pressure's).
+    pub walls: bool,
+    /// "random", "lattice" or "compressed".
+    pub start: &'static str,
+    /// Z over the replicas.
+    pub z: Stats,
+    /// Block-average standard error of the point's mean Z (the replicas'
+    /// block errors combined), the mean block length (time) and the
+    /// largest ratio of the estimate with blocks twice as long (NaN where
+    /// a run had too few blocks to double).
+    pub block_stderr: f64,
+    pub block_time: f64,
+    pub block_doubling: f64,
+    /// Time discarded before recording (the descriptor's `equilibrate`),
+    /// the mean time the MSER rule cut after it, and the largest |drift|.
+    pub equilibrate: f64,
+    pub cut: f64,
+    pub drift: f64,
+    /// Pair collisions per particle per unit time while measuring, and
+    /// per particle while compressing the start (0 for other starts).
+    pub collision_rate: f64,
+    pub prepare_per_particle: f64,
+    /// Z from the walls minus Z from the virial, paired per replica.
+    pub wall_minus_virial: Option<Stats>,
+    pub z_wall: Option<Stats>,
+    pub z_virial: Option<Stats>,
+    pub cpu_seconds: f64,
+    /// The first replica's pressure series (time, P), as stored.
+    pub example: Option<(String, Vec<f64>, Vec<f64>)>,
+}
+
+impl Point {
+    /// The point's error bar on Z and where it comes from.
+    pub fn error(&self) -> (f64, &'static str) {
+        if self.z.n >= MIN_REPLICAS || !self.block_stderr.is_finite() {
+            (self.z.stderr, "replicas")
+        } else {
+            (self.block_stderr, "blocks")
+        }
+    }
+
+    /// Z with the point's error bar, as `Stats` for z-scores.
+    pub fn z_stats(&self) -> Stats {
+        Stats {
+            stderr: self.error().0,
+            ..self.z
+        }
+    }
+}
+
+pub fn points(runs: &[(RunSpec, RunOutput)]) -> Vec<Point> {
+    let mut by_id: BTreeMap<u64, Vec<&(RunSpec, RunOutput)>> = BTreeMap::new();
+    for r in runs
+        .iter()
+        .filter(|(s, o)| s.case.is_none() && o.scalar("Z").is_some())
+    {
+        by_id.entry(r.0.point_id).or_default().push(r);
+    }
+    by_id.into_values().filter_map(|rs| point(&rs)).collect()
+}
+
+fn point(rs: &[&(RunSpec, RunOutput)]) -> Option<Point> {
+    let d = &rs[0].0.descriptor;
+    let scene = crate::scene::resolve(&d.scene).ok()?;
+    let of = |name: &str| -> Vec<f64> { rs.iter().filter_map(|(_, o)| o.scalar(name)).collect() };
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let stats_if = |name: &str| {
+        let v = of(name);
+        (v.len() == rs.len()).then(|| Stats::of(&v))
+    };
+    let particles: usize = scene.species.iter().map(|s| s.count).sum();
+    let blocks = of("Z_block_stderr");
+    let runs = rs.len() as f64;
+    let duration = d.run.duration.unwrap_or(f64::NAN);
+    let collisions: f64 = rs.iter().map(|(_, o)| o.collisions as f64).sum();
+    let paired: Vec<f64> = rs
+        .iter()
+        .filter_map(|(_, o)| Some(o.scalar("Z_wall")? - o.scalar("Z_virial")?))
+        .collect();
+    let walls = scene
+        .boundary
+        .as_ref()
+        .is_none_or(|b| b.contains(&Boundary::Walls));
+    let example = rs[0].1.series.iter().find_map(|s| {
+        ["wall_pressure", "virial_pressure"]
+            .contains(&s.observable.as_str())
+            .then(|| (s.observable.clone(), s.t.clone(), s.value.clone()))
+    });
+    Some(Point {
+        dimension: scene.dimension().ok()?,
+        particles,
+        eta: mean(&of("packing_fraction")),
+        walls,
+        start: match scene.placement {
+            Some(Placement::Compress { .. }) => "compressed",
+            Some(Placement::Lattice { .. }) => "lattice",
+            _ => "random",
+        },
+        z: Stats::of(&of("Z")),
+        block_stderr: if blocks.len() == rs.len() {
+            blocks.iter().map(|s| s * s).sum::<f64>().sqrt() / runs
+        } else {
+            f64::NAN
+        },
+        block_time: mean(&of("block_time")),
+        block_doubling: {
+            let v = of("block_doubling");
+            if v.len() == rs.len() {
+                v.iter().copied().fold(0.0, f64::max)
+            } else {
+                f64::NAN
+            }
+        },
+        equilibrate: d.run.equilibrate,
+        cut: mean(&of("equilibration_cut")),
+        drift: of("Z_drift").iter().map(|x| x.abs()).fold(0.0, f64::max),
+        collision_rate: collisions / (particles as f64 * duration * runs),
+        prepare_per_particle: mean(&of("prepare_collisions")) / particles as f64,
+        wall_minus_virial: (paired.len() == rs.len()).then(|| Stats::of(&paired)),
+        z_wall: stats_if("Z_wall"),
+        z_virial: stats_if("Z_virial"),
+        cpu_seconds: rs.iter().map(|(_, o)| o.cpu_seconds).sum(),
+        example,
+    })
+}
+
+#[cfg(test)]
+pub(super) mod tests {
+    use super::Point;
+    use crate::stats::summary::Stats;
+
+    /// A point with 8 replicas of mean `z` and standard error `err`.
+    pub fn point(d: usize, n: usize, eta: f64, z: f64, err: f64) -> Point {
+        Point {
+            dimension: d,
+            particles: n,
+            eta,
+            walls: false,
+            start: "random",
+            z: Stats {
+                n: 8,
+                mean: z,
+                std: err * 8f64.sqrt(),
+                stderr: err,
+                ci_low: f64::NAN,
+                ci_high: f64::NAN,
+            },
+            block_stderr: err,
+            block_time: 1.0,
+            block_doubling: 1.0,
+            equilibrate: 0.0,
+            cut: 0.0,
+            drift: 0.0,
+            collision_rate: 1.0,
+            prepare_per_particle: 0.0,
+            wall_minus_virial: None,
+            z_wall: None,
+            z_virial: None,
+            cpu_seconds: 0.0,
+            example: None,
+        }
+    }
+}
