@@ -2,10 +2,9 @@
 //! threshold is four standard deviations of the statistic under the
 //! hypothesis, from the replicas' own spread, never tuned to one outcome).
 
-use bonkers::descriptor::load::parse;
+use crate::study_common::ensemble;
 use bonkers::model::run_output::RunOutput;
 use bonkers::model::run_spec::RunSpec;
-use bonkers::runner::plan::plan;
 use bonkers::stats::summary::Stats;
 use bonkers::studies::Study;
 use bonkers::studies::equilibrium::{Ensemble, Equilibrium, tests_of};
@@ -81,25 +80,6 @@ sample_every = 0.5
 [analysis.equilibrium]
 "#
     )
-}
-
-/// Every planned run, on two threads.
-fn ensemble(text: &str) -> Vec<(RunSpec, RunOutput)> {
-    let loaded = parse("test.toml", text).expect("valid descriptor");
-    let specs = plan(&loaded).expect("plan");
-    let (a, b) = specs.split_at(specs.len() / 2);
-    let run = |part: &[RunSpec]| -> Vec<(RunSpec, RunOutput)> {
-        part.iter()
-            .map(|r| (r.clone(), bonkers::runner::simulate::run(r).expect("run")))
-            .collect()
-    };
-    std::thread::scope(|s| {
-        let first = s.spawn(|| run(a));
-        let mut out = run(b);
-        let mut all = first.join().expect("thread");
-        all.append(&mut out);
-        all
-    })
 }
 
 fn with_ensembles(runs: &[(RunSpec, RunOutput)]) -> Vec<(Ensemble, &RunOutput)> {

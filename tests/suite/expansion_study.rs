@@ -1,10 +1,9 @@
 //! Statistical regression tests of the expansion study (seeded; thresholds
 //! are four standard errors of the ensemble, never tuned to one outcome).
 
-use bonkers::descriptor::load::parse;
+use crate::study_common::ensemble;
 use bonkers::model::run_output::RunOutput;
 use bonkers::model::run_spec::RunSpec;
-use bonkers::runner::plan::plan;
 use bonkers::stats::summary::Stats;
 use bonkers::studies::expansion::Gas;
 use bonkers::theory::expansion::FreeExpansion;
@@ -35,25 +34,6 @@ sample_every = 0.5
 [analysis.expansion]
 "#
     )
-}
-
-/// Every planned run, on two threads.
-fn ensemble(text: &str) -> Vec<(RunSpec, RunOutput)> {
-    let loaded = parse("test.toml", text).expect("valid descriptor");
-    let specs = plan(&loaded).expect("plan");
-    let (a, b) = specs.split_at(specs.len() / 2);
-    let run = |part: &[RunSpec]| -> Vec<(RunSpec, RunOutput)> {
-        part.iter()
-            .map(|r| (r.clone(), bonkers::runner::simulate::run(r).expect("run")))
-            .collect()
-    };
-    std::thread::scope(|s| {
-        let first = s.spawn(|| run(a));
-        let mut out = run(b);
-        let mut all = first.join().expect("thread");
-        all.append(&mut out);
-        all
-    })
 }
 
 fn stats(runs: &[(RunSpec, RunOutput)], name: &str) -> Stats {

@@ -2,6 +2,7 @@
 //! four standard errors of the ensemble, never tuned to one outcome), and
 //! the exact one: rods of equal mass never mix.
 
+use crate::study_common::ensemble;
 use bonkers::descriptor::load::parse;
 use bonkers::engine::{Rods, Stop};
 use bonkers::model::run_output::RunOutput;
@@ -35,25 +36,6 @@ sample_every = 1.0
 [analysis.mixing]
 "#
     )
-}
-
-/// Every planned run, on two threads.
-fn ensemble(text: &str) -> Vec<(RunSpec, RunOutput)> {
-    let loaded = parse("test.toml", text).expect("valid descriptor");
-    let specs = plan(&loaded).expect("plan");
-    let (a, b) = specs.split_at(specs.len() / 2);
-    let run = |part: &[RunSpec]| -> Vec<(RunSpec, RunOutput)> {
-        part.iter()
-            .map(|r| (r.clone(), bonkers::runner::simulate::run(r).expect("run")))
-            .collect()
-    };
-    std::thread::scope(|s| {
-        let first = s.spawn(|| run(a));
-        let mut out = run(b);
-        let mut all = first.join().expect("thread");
-        all.append(&mut out);
-        all
-    })
 }
 
 fn scalars(runs: &[(RunSpec, RunOutput)], name: &str) -> Vec<f64> {

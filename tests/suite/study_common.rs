@@ -2,8 +2,10 @@
 //! fake simulator (outputs are a pure function of the run's seed and params).
 #![allow(dead_code)]
 
+use bonkers::descriptor::load::parse;
 use bonkers::model::run_output::{Histogram, RunOutput, Series};
 use bonkers::model::run_spec::RunSpec;
+use bonkers::runner::plan::plan;
 use bonkers::runner::store::read_parquet;
 use polars::prelude::DataFrame;
 use std::path::{Path, PathBuf};
@@ -155,4 +157,23 @@ pub fn assert_same(a: &[(String, DataFrame)], b: &[(String, DataFrame)]) {
             );
         }
     }
+}
+
+/// Every planned run of descriptor `text`, on two threads.
+pub fn ensemble(text: &str) -> Vec<(RunSpec, RunOutput)> {
+    let loaded = parse("test.toml", text).expect("valid descriptor");
+    let specs = plan(&loaded).expect("plan");
+    let (a, b) = specs.split_at(specs.len() / 2);
+    let run = |part: &[RunSpec]| -> Vec<(RunSpec, RunOutput)> {
+        part.iter()
+            .map(|r| (r.clone(), bonkers::runner::simulate::run(r).expect("run")))
+            .collect()
+    };
+    std::thread::scope(|s| {
+        let first = s.spawn(|| run(a));
+        let mut out = run(b);
+        let mut all = first.join().expect("thread");
+        all.append(&mut out);
+        all
+    })
 }
