@@ -39,8 +39,9 @@ enum Command {
     /// Make the tables, plots and report from the saved runs, running nothing.
     ///
     /// Give it the output folder (`study collect DIR`: its .study.json says how
-    /// the runs were planned), or the descriptor and flags of the `study run`
-    /// that saved the runs. Planned runs with no record are listed, with the
+    /// the runs were planned; `study collect DIR MORE...` first joins the runs
+    /// of shards saved in other folders), or the descriptor and flags of the
+    /// `study run` that saved the runs. Planned runs with no record are listed, with the
     /// command that runs exactly them, and nothing is written.
     Collect(CollectArgs),
     /// How far the study in an output folder is: runs done, failed and
@@ -163,6 +164,10 @@ struct CollectArgs {
     /// Output directory holding the runs (default: reports/<study name>/).
     #[arg(long)]
     out: Option<PathBuf>,
+    /// With an output folder as FILE: more folders whose runs (shards of the
+    /// same plan) are joined into it before collecting.
+    #[arg(value_name = "MORE")]
+    more: Vec<PathBuf>,
 }
 
 /// Set by Ctrl-C: no new runs start.
@@ -316,8 +321,16 @@ fn collect(a: CollectArgs, args: Vec<std::ffi::OsString>) -> Result<i32, StudyEr
             ))
             .into());
         }
-        let outcome = pipeline::collect_folder(&a.plan.file, command_line)?;
+        let outcome = pipeline::collect_folder(&a.plan.file, &a.more, command_line)?;
         return Ok(collected(&outcome));
+    }
+    if let Some(more) = a.more.first() {
+        return Err(DescriptorError::new(
+            &more.display().to_string(),
+            "more folders go with an output folder, not with a descriptor",
+        )
+        .hint("`study collect DIR MORE...` joins the runs of MORE into DIR and collects them")
+        .into());
     }
     let options = CollectOptions {
         out: a.out,

@@ -5,6 +5,7 @@
 use crate::descriptor::errors::{DescriptorError, StudyError};
 use crate::descriptor::load::{self, Loaded};
 use crate::descriptor::sweep::{self, CONFIRM_ABOVE};
+use crate::files::write_atomic;
 use crate::model::run_spec::RunSpec;
 use crate::runner::checkpoint;
 use crate::runner::collect::{self, Collected, Invocation, RunCommand};
@@ -13,7 +14,7 @@ use crate::runner::origin::{self, Origin};
 use crate::runner::plan;
 use crate::runner::progress::ProgressMode;
 use crate::runner::publish;
-use crate::runner::run::{RunnerOptions, RunnerReport, SimulateFn, Subset, run_subset};
+use crate::runner::run::{self, RunnerOptions, RunnerReport, SimulateFn, Subset, run_subset};
 use crate::runner::shard::{self, Shard};
 use anyhow::Context;
 use std::path::{Path, PathBuf};
@@ -406,9 +407,17 @@ pub fn run_slice(
     Ok(report.0)
 }
 
-/// `study collect DIR`: as `collect_study`, with the plan that the folder's
-/// `.study.json` saved.
-pub fn collect_folder(out_dir: &Path, command_line: Vec<String>) -> Result<Collected, StudyError> {
+/// `study collect DIR [MORE...]`: the runs of the plan that DIR's
+/// `.study.json` saved, into tables, report and manifest in DIR. Records in
+/// the MORE folders (shards run into folders of their own, e.g. one per
+/// node) are copied into DIR first; each folder must hold the same plan, a
+/// record DIR already has is kept, and every record is checked against its
+/// run as any record is.
+pub fn collect_folder(
+    out_dir: &Path,
+    more: &[PathBuf],
+    command_line: Vec<String>,
+) -> Result<Collected, StudyError> {
     let started = SystemTime::now();
     let clock = Instant::now();
     let planned = plan_folder(out_dir)?;
@@ -422,6 +431,9 @@ pub fn collect_folder(out_dir: &Path, command_line: Vec<String>) -> Result<Colle
         rerun: planned.rerun(),
     };
     let _lock = claim(out_dir)?;
+    for other in more {
+        join_records(&planned, other)?;
+    }
     collect::collect(
         &planned.loaded,
         planned.specs,
@@ -429,6 +441,44 @@ pub fn collect_folder(out_dir: &Path, command_line: Vec<String>) -> Result<Colle
         out_dir,
         &invocation,
     )
+}
+
+/// Copy into the plan's folder the records of `other` it lacks, once
+/// `other` is shown to hold the same plan and no shard is writing there.
+fn join_records(planned: &Planned, other: &Path) -> Result<(), StudyError> {
+    let theirs = origin::load(other)?;
+    let ours = &planned.origin;
+    if (&theirs.text, theirs.quick, theirs.replicas) != (&ours.text, ours.quick, ours.replicas) {
+        return Err(DescriptorError::new(
+            &other.display().to_string(),
+            format!(
+                "holds runs of another plan than {} (its .study.json differs: descriptor text, --quick or --replicas)",
+                planned.out_dir.display()
+            ),
+        )
+        .hint("collect together only folders that ran shards of the same `study run` command")
+        .into());
+    }
+    let _theirs_lock = OutLock::acquire(other)?;
+    std::fs::create_dir_all(run::runs_dir(&planned.out_dir)).with_context(|| {
+        format!(
+            "cannot create {}",
+            run::runs_dir(&planned.out_dir).display()
+        )
+    })?;
+    for spec in &planned.specs {
+        let (from, to) = (
+            run::run_file(other, spec.seed),
+            run::run_file(&planned.out_dir, spec.seed),
+        );
+        if to.exists() || !from.is_file() {
+            continue;
+        }
+        let bytes = std::fs::read(&from)
+            .with_context(|| format!("cannot read the record {}", from.display()))?;
+        write_atomic(&to, &bytes)?;
+    }
+    Ok(())
 }
 
 /// The plan of the runs in `out_dir` (from its `.study.json`): descriptor,

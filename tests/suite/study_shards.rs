@@ -106,6 +106,66 @@ fn three_shards_then_collect_equal_one_run() {
     assert_same(&tables(&whole), &tables(&out));
 }
 
+/// Shards saved into folders of their own (one per node, no shared file
+/// system), then `study collect DIR MORE...`: the tables of one whole run.
+/// A folder of another plan is refused, naming it.
+#[test]
+fn shards_in_separate_folders_are_joined_by_collect() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = write_descriptor(dir.path(), PISTON);
+    let whole = dir.path().join("whole");
+    let o = study(&["run", s(&file), "--out", s(&whole), "--quiet"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let parts: Vec<_> = (1..=3)
+        .map(|k| dir.path().join(format!("node-{k}")))
+        .collect();
+    for (k, part) in parts.iter().enumerate() {
+        let shard = format!("{}/3", k + 1);
+        let o = study(&[
+            "run",
+            s(&file),
+            "--out",
+            s(part),
+            "--shard",
+            &shard,
+            "--quiet",
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+    }
+    // One folder alone lacks the others' runs.
+    let o = study(&["collect", s(&parts[0])]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+
+    let other = dir.path().join("other");
+    std::fs::create_dir_all(dir.path().join("edited")).unwrap();
+    let edited = write_descriptor(
+        &dir.path().join("edited"),
+        &PISTON.replacen("seed = ", "seed = 1", 1),
+    );
+    let o = study(&[
+        "run",
+        s(&edited),
+        "--out",
+        s(&other),
+        "--shard",
+        "1/3",
+        "--quiet",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = study(&["collect", s(&parts[0]), s(&other)]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("holds runs of another plan"),
+        "{}",
+        stderr(&o)
+    );
+
+    let o = study(&["collect", s(&parts[0]), s(&parts[1]), s(&parts[2])]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stderr(&o).contains("collected 18 runs"), "{}", stderr(&o));
+    assert_same(&tables(&whole), &tables(&parts[0]));
+}
+
 fn options(out: &Path) -> StudyOptions {
     StudyOptions {
         out: Some(out.to_path_buf()),
