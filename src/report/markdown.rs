@@ -92,18 +92,31 @@ fn what_was_run(md: &mut String, inp: &Inputs) {
         md.push_str("No sweep: one point.\n\n");
     }
     let run = &d.run;
+    // A `[run]` key the sweep sets is in the table above, not here.
+    let fixed = |key: &str| {
+        d.sweep
+            .as_ref()
+            .is_none_or(|s| !s.parameters.contains_key(&format!("run.{key}")))
+    };
     let mut length = Vec::new();
-    if let Some(t) = run.duration {
+    if let Some(t) = run.duration.filter(|_| fixed("duration")) {
         length.push(format!("duration {}", num(t)));
     }
-    if let Some(c) = run.collisions {
+    if let Some(c) = run.collisions.filter(|_| fixed("collisions")) {
         length.push(format!("{} collisions", count(c)));
     }
-    if run.equilibrate > 0.0 {
+    if run.equilibrate > 0.0 && fixed("equilibrate") {
         length.push(format!("after equilibrating for {}", num(run.equilibrate)));
     }
-    if let Some(s) = run.sample_every {
+    if let Some(s) = run.sample_every.filter(|_| fixed("sample_every")) {
         length.push(format!("sampled every {}", num(s)));
+    }
+    let swept_run = d
+        .sweep
+        .as_ref()
+        .is_some_and(|s| s.parameters.keys().any(|k| k.starts_with("run.")));
+    if swept_run {
+        length.push("`[run]` keys of the sweep as in its table".into());
     }
     let planned = inp.meta.planned_runs.max(inp.runs.len());
     let case_runs =
