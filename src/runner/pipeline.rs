@@ -111,6 +111,17 @@ struct Planned {
     path: PathBuf,
 }
 
+/// The plan of a `study run` with `options`.
+fn plan_run(path: &Path, options: &StudyOptions) -> Result<Planned, StudyError> {
+    plan_study(
+        path,
+        options.replicas,
+        options.quick,
+        options.yes,
+        options.out.as_ref(),
+    )
+}
+
 fn plan_study(
     path: &Path,
     replicas: Option<u32>,
@@ -280,13 +291,7 @@ pub fn run_study(
 ) -> Result<StudyOutcome, StudyError> {
     let started = SystemTime::now();
     let clock = Instant::now();
-    let planned = plan_study(
-        path,
-        options.replicas,
-        options.quick,
-        options.yes,
-        options.out.as_ref(),
-    )?;
+    let planned = plan_run(path, options)?;
     let _lock = claim(&planned.out_dir)?;
     let (mut report, runs_wall_seconds) = compute(
         &planned,
@@ -333,13 +338,7 @@ pub fn run_part(
     simulate: &SimulateFn<'_>,
     stop: &AtomicBool,
 ) -> Result<RunnerReport, StudyError> {
-    let planned = plan_study(
-        path,
-        options.replicas,
-        options.quick,
-        options.yes,
-        options.out.as_ref(),
-    )?;
+    let planned = plan_run(path, options)?;
     let _lock = claim(&planned.out_dir)?;
     let claim = Claim::Whole { keep: false };
     Ok(compute(&planned, subset, options, claim, simulate, stop)?.0)
@@ -364,13 +363,7 @@ pub fn run_slice(
     simulate: &SimulateFn<'_>,
     stop: &AtomicBool,
 ) -> Result<RunnerReport, StudyError> {
-    let planned = plan_study(
-        path,
-        options.replicas,
-        options.quick,
-        options.yes,
-        options.out.as_ref(),
-    )?;
+    let planned = plan_run(path, options)?;
     let shard = match slice {
         Slice::Shard(s) => Some(*s),
         Slice::Runs(_) => None,

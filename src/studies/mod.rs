@@ -4,6 +4,7 @@
 //! `REGISTRY`; a descriptor asks for it as `[analysis.<name>]`.
 
 pub mod accuracy;
+pub mod curves;
 pub mod equilibrium;
 pub mod expansion;
 pub mod mixing;

@@ -8,6 +8,7 @@ use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::run_output::{Histogram, RunOutput};
 use crate::stats::replicas::fractions;
 use crate::stats::summary::Stats;
+use crate::studies::curves::mean_with_band;
 use crate::theory::maxwell::{MaxwellSpeed, normal_pdf};
 
 pub type Runs<'a> = [(&'a Ensemble, &'a RunOutput)];
@@ -457,21 +458,8 @@ pub fn settling(
     y_label: &str,
     reference: Option<(f64, &str)>,
 ) -> ChartSpec {
-    let mut layers = vec![
-        Layer::Band {
-            x: t.to_vec(),
-            lower: mean.iter().map(|s| s.mean - s.stderr).collect(),
-            upper: mean.iter().map(|s| s.mean + s.stderr).collect(),
-            paint: colour(0).faded(0.3),
-        },
-        Layer::Line {
-            points: t.iter().zip(mean).map(|(t, s)| (*t, s.mean)).collect(),
-            paint: colour(0),
-            width: 2,
-            dashed: false,
-            label: Some("mean over replicas (band: ± standard error)".into()),
-        },
-    ];
+    let label = "mean over replicas (band: ± standard error)".to_string();
+    let mut layers = mean_with_band(t, mean, colour(0), label).to_vec();
     if let (Some((level, label)), Some(t0), Some(t1)) = (reference, t.first(), t.last()) {
         layers.push(Layer::Line {
             points: vec![(*t0, level), (*t1, level)],

@@ -11,6 +11,7 @@ use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::stats::format::{count, num, pm};
 use crate::stats::summary::Stats;
+use crate::studies::curves::mean_with_band;
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
@@ -203,21 +204,8 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
 }
 
 fn chart(label: &str, t: &[f64], mean: &[Stats], free: Option<impl Fn(f64) -> f64>) -> ChartSpec {
-    let mut layers = vec![
-        Layer::Band {
-            x: t.to_vec(),
-            lower: mean.iter().map(|s| s.mean - s.stderr).collect(),
-            upper: mean.iter().map(|s| s.mean + s.stderr).collect(),
-            paint: colour(0).faded(0.3),
-        },
-        Layer::Line {
-            points: t.iter().zip(mean).map(|(t, s)| (*t, s.mean)).collect(),
-            paint: colour(0),
-            width: 2,
-            dashed: false,
-            label: Some("measured (mean ± standard error)".into()),
-        },
-    ];
+    let measured = "measured (mean ± standard error)".to_string();
+    let mut layers = mean_with_band(t, mean, colour(0), measured).to_vec();
     if let Some(f) = free {
         layers.push(Layer::Line {
             points: t.iter().map(|&t| (t, f(t))).collect(),

@@ -7,6 +7,7 @@ use super::section::Point;
 use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::report::Figure;
 use crate::stats::format::{count, num, pm};
+use crate::studies::curves::mean_with_band;
 use crate::theory::mixing::{slowest_mode_time, step_excess, step_mixing_time};
 use std::fmt::Write;
 
@@ -199,22 +200,7 @@ fn sides(p: &Point, index: usize, tau_d: f64) -> Option<Figure> {
             first_a = mean[0].mean;
             times = t.clone();
         }
-        let paint = colour(i);
-        if mean[0].n > 1 {
-            layers.push(Layer::Band {
-                x: t.clone(),
-                lower: mean.iter().map(|s| s.mean - s.stderr).collect(),
-                upper: mean.iter().map(|s| s.mean + s.stderr).collect(),
-                paint: paint.faded(0.3),
-            });
-        }
-        layers.push(Layer::Line {
-            points: t.iter().zip(&mean).map(|(t, s)| (*t, s.mean)).collect(),
-            paint,
-            width: 2,
-            dashed: false,
-            label: Some(text.clone()),
-        });
+        layers.extend(mean_with_band(&t, &mean, colour(i), text.clone()));
     }
     if tau_d.is_finite() {
         // The slowest mode's time from the 1/e time of the step's series.

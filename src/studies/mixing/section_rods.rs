@@ -7,6 +7,7 @@ use super::section::Point;
 use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::report::Figure;
 use crate::stats::format::{count, num, pm};
+use crate::studies::curves::mean_with_band;
 use crate::theory::mixing::equilibrium_concentration;
 use std::fmt::Write;
 
@@ -303,22 +304,8 @@ fn curves(points: &[Point], md: &mut String, figures: &mut Vec<Figure>) {
     let mut layers = Vec::new();
     for (i, p) in shown.iter().enumerate() {
         let (t, mean) = p.mean_curve("energy_concentration");
-        let paint = colour(i);
-        if mean.len() > 1 && mean[0].n > 1 {
-            layers.push(Layer::Band {
-                x: t.clone(),
-                lower: mean.iter().map(|s| s.mean - s.stderr).collect(),
-                upper: mean.iter().map(|s| s.mean + s.stderr).collect(),
-                paint: paint.faded(0.3),
-            });
-        }
-        layers.push(Layer::Line {
-            points: t.iter().zip(&mean).map(|(t, s)| (*t, s.mean)).collect(),
-            paint,
-            width: 2,
-            dashed: false,
-            label: Some(format!("ε = {}", num(p.first("mass_spread")))),
-        });
+        let label = format!("ε = {}", num(p.first("mass_spread")));
+        layers.extend(mean_with_band(&t, &mean, colour(i), label));
     }
     let Some(first) = shown.first() else {
         return;
