@@ -18,9 +18,8 @@ pub use labels::axis_label;
 use crate::files::write_atomic;
 use crate::model::descriptor::Descriptor;
 use crate::model::report::ReportSection;
-use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
 use crate::model::summary::SummaryRow;
+use crate::stats::ensemble::Runs;
 use anyhow::Context;
 use std::path::Path;
 
@@ -50,7 +49,7 @@ pub struct ReportMeta {
 pub fn write(
     out_dir: &Path,
     descriptor: &Descriptor,
-    runs: &[(RunSpec, RunOutput)],
+    runs: &Runs,
     summary: &[SummaryRow],
     sections: &[ReportSection],
     meta: &ReportMeta,

@@ -5,15 +5,15 @@ use super::chart::{ChartSpec, Layer};
 use super::labels::axis_label;
 use super::plots::{Points, evenly, point_label};
 use crate::model::chart::colour;
-use crate::model::run_output::{RunOutput, Series};
-use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs;
+use crate::stats::summary::Stats;
 use std::collections::BTreeSet;
 
 const MAX_POINTS: usize = 6;
 const TRACES_PER_POINT: usize = 2;
 
 /// (observable, chart) for every observable a run of `points` recorded, sorted by name.
-pub fn charts(runs: &[(RunSpec, RunOutput)], points: &Points) -> Vec<(String, ChartSpec)> {
+pub fn charts(runs: &Runs, points: &Points) -> Vec<(String, ChartSpec)> {
     let names: BTreeSet<&str> = runs
         .iter()
         .filter(|(s, _)| points.contains_key(&s.point_id))
@@ -27,20 +27,19 @@ pub fn charts(runs: &[(RunSpec, RunOutput)], points: &Points) -> Vec<(String, Ch
         .collect()
 }
 
-fn chart(name: &str, runs: &[(RunSpec, RunOutput)], shown: &[u64], points: &Points) -> ChartSpec {
+fn chart(name: &str, runs: &Runs, shown: &[u64], points: &Points) -> ChartSpec {
     let mut layers = Vec::new();
     for (i, id) in shown.iter().enumerate() {
-        let replicas: Vec<&Series> = runs
-            .iter()
-            .filter(|(s, _)| s.point_id == *id)
-            .filter_map(|(_, o)| o.series(name))
-            .filter(|s| !s.t.is_empty() && !s.value.is_empty())
-            .collect();
-        let Some(first) = replicas.first() else {
+        let Some((t, stats)) = runs.mean(*id, name).filter(|(t, _)| !t.is_empty()) else {
             continue;
         };
         let paint = colour(i);
-        for trace in replicas.iter().take(TRACES_PER_POINT) {
+        let traces = runs
+            .iter()
+            .filter(|(s, _)| s.point_id == *id)
+            .filter_map(|(_, o)| o.series(name))
+            .take(TRACES_PER_POINT);
+        for trace in traces {
             layers.push(Layer::Line {
                 points: trace
                     .t
@@ -54,27 +53,24 @@ fn chart(name: &str, runs: &[(RunSpec, RunOutput)], shown: &[u64], points: &Poin
                 label: None,
             });
         }
-        let (mean, std) = mean_std(&replicas);
-        let t: Vec<f64> = first.t.iter().copied().take(mean.len()).collect();
-        if replicas.len() >= 2 {
+        let replicas = stats.iter().map(|s| s.n).max().unwrap_or(0);
+        if replicas >= 2 {
+            // One std either side (not the standard error): the spread of single runs.
+            let spread = |s: &Stats| if s.n < 2 { 0.0 } else { s.std };
             layers.push(Layer::Band {
                 x: t.clone(),
-                lower: mean.iter().zip(&std).map(|(m, s)| m - s).collect(),
-                upper: mean.iter().zip(&std).map(|(m, s)| m + s).collect(),
+                lower: stats.iter().map(|s| s.mean - spread(s)).collect(),
+                upper: stats.iter().map(|s| s.mean + spread(s)).collect(),
                 paint: paint.faded(0.18),
             });
         }
         let params = points.get(id).map(Vec::as_slice).unwrap_or(&[]);
         layers.push(Layer::Line {
-            points: t.into_iter().zip(mean).collect(),
+            points: t.into_iter().zip(stats.iter().map(|s| s.mean)).collect(),
             paint,
             width: 2,
             dashed: false,
-            label: Some(format!(
-                "{} (mean of {})",
-                point_label(params),
-                replicas.len()
-            )),
+            label: Some(format!("{} (mean of {replicas})", point_label(params),)),
         });
     }
     ChartSpec {
@@ -85,36 +81,4 @@ fn chart(name: &str, runs: &[(RunSpec, RunOutput)], shown: &[u64], points: &Poin
         y_log: false,
         layers,
     }
-}
-
-/// Mean and sample std at each time index over replicas, truncated to the
-/// shortest replica (they share a t grid); non-finite samples are skipped and
-/// an index with none left is NaN (a gap in the line).
-pub fn mean_std(replicas: &[&Series]) -> (Vec<f64>, Vec<f64>) {
-    let len = replicas
-        .iter()
-        .map(|s| s.t.len().min(s.value.len()))
-        .min()
-        .unwrap_or(0);
-    (0..len)
-        .map(|i| {
-            let v: Vec<f64> = replicas
-                .iter()
-                .map(|s| s.value[i])
-                .filter(|v| v.is_finite())
-                .collect();
-            let n = v.len() as f64;
-            let mean = if v.is_empty() {
-                f64::NAN
-            } else {
-                v.iter().sum::<f64>() / n
-            };
-            let std = if v.len() < 2 {
-                0.0
-            } else {
-                (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt()
-            };
-            (mean, std)
-        })
-        .unzip()
 }

@@ -9,6 +9,7 @@ use crate::files::write_atomic;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::model::summary::SummaryRow;
+use crate::stats::ensemble::Runs;
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -43,7 +44,7 @@ pub fn points(runs: &[(RunSpec, RunOutput)]) -> Points {
 pub fn write_all(
     out_dir: &Path,
     presented: &[String],
-    runs: &[(RunSpec, RunOutput)],
+    runs: &Runs,
     summary: &[SummaryRow],
 ) -> anyhow::Result<Vec<Figure>> {
     let mut points = points(runs);

@@ -4,28 +4,26 @@
 //! nothing is written; failed runs are listed and kept in the tables, as
 //! their status.
 //!
-//! Memory: records are read one at a time (or taken from the runner, which
-//! `study run` lets hold them), and once a run is found missing none is kept.
-//! The statistics are made one sweep point at a time. The tables, the
-//! studies' sections and the report take every run at once
-//! (`store::write_tables`, `studies::sections`, `report::write`), so all
-//! records of the plan are held together once, and moved, not copied, from
-//! the tables to the report.
+//! Memory: records are read one at a time, in plan order. The long tables
+//! (series, histograms) are written as they stream past, a row group at a
+//! time; what is held is each run's scalars and histograms, the series of
+//! the first few replicas of each point, and each point's series means
+//! (`stats::ensemble`): memory grows with the plan's points, not its
+//! replicas, and never holds the samples of all runs.
 
 use crate::descriptor::errors::StudyError;
 use crate::descriptor::load::{self, Loaded};
 use crate::files::write_atomic;
 use crate::model::movie::MovieSpec;
 use crate::model::report::ReportSection;
-use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::model::summary::SummaryRow;
 use crate::report::ReportMeta;
 use crate::runner::manifest::{Manifest, RunCounts, rfc3339, version};
 use crate::runner::publish::{self, Staging};
-use crate::runner::record::RunRecord;
 use crate::runner::run::{Stored, fingerprint, read_record};
 use crate::runner::store;
+use crate::stats::ensemble::Runs;
 use anyhow::Context;
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -244,70 +242,23 @@ pub struct Collected {
     pub estimated_seconds: f64,
 }
 
-/// The records of every run of the plan `specs`, in plan order.
-struct Records {
-    /// Empty once a run is missing: nothing will be written.
-    runs: Vec<(RunSpec, RunRecord)>,
-    missing: Vec<Unfinished>,
-    failed: Vec<Unfinished>,
-}
-
-/// Read the records one at a time, taking those in `held` (by plan
-/// position) from there; a record made by another descriptor or bonkers
-/// version, or one that does not parse, counts as missing.
-fn read_all(specs: Vec<RunSpec>, mut held: Vec<Option<RunRecord>>, out_dir: &Path) -> Records {
-    let mut records = Records {
-        runs: Vec::new(),
-        missing: Vec::new(),
-        failed: Vec::new(),
-    };
-    for (i, spec) in specs.into_iter().enumerate() {
-        let stored = match held.get_mut(i).and_then(Option::take) {
-            Some(record) => Stored::Found(record),
-            None => read_record(out_dir, &spec),
-        };
-        let why = match stored {
-            Stored::Found(record) if record.fingerprint == fingerprint(&spec) => {
-                if !record.ok() {
-                    records
-                        .failed
-                        .push(Unfinished::of(&spec, record.status.clone()));
-                }
-                if records.missing.is_empty() {
-                    records.runs.push((spec, record));
-                }
-                continue;
-            }
-            Stored::Found(_) => {
-                "its record was made by another descriptor or bonkers version".to_string()
-            }
-            Stored::Unreadable(e) => format!("its record is unreadable: {e}"),
-            Stored::Missing => "no record".to_string(),
-        };
-        records.missing.push(Unfinished::of(&spec, why));
-        records.runs = Vec::new();
-    }
-    records
-}
-
 /// Collect the records of the plan `specs` saved in `out_dir` into the
-/// tables, report and manifest there. `held` may hold records already in
-/// memory, by plan position (the same as their files; empty: read every file).
-/// The caller holds the out dir's lock.
+/// tables, report and manifest there. The caller holds the out dir's lock.
 pub fn collect(
     loaded: &Loaded,
     specs: Vec<RunSpec>,
-    held: Vec<Option<RunRecord>>,
     out_dir: &Path,
     invocation: &Invocation,
 ) -> Result<Collected, StudyError> {
     let planned = specs.len();
     let estimated_seconds: f64 = crate::runner::shard::estimated_seconds(&specs).iter().sum();
-    let Records {
+    let Streamed {
+        staged,
         runs,
         missing,
         failed,
-    } = read_all(specs, held, out_dir);
+        cpu_seconds,
+    } = stream(specs, out_dir)?;
     if !missing.is_empty() {
         return Err(StudyError::Other(anyhow::Error::new(MissingRuns {
             out_dir: out_dir.to_path_buf(),
@@ -322,28 +273,18 @@ pub fn collect(
             missing,
         })));
     }
-    let cpu_seconds: f64 = runs
-        .iter()
-        .map(|(_, r)| r.output.cpu_seconds)
-        .filter(|s| s.is_finite())
-        .sum();
 
-    let staging = Staging::create(out_dir)?;
+    let (staging, tables) = match staged {
+        Some(staged) => staged,
+        None => staging(out_dir)?,
+    };
     let summary = summarize(&runs);
-    store::write_tables(staging.dir(), &runs, &summary)?;
-    let failed_runs: Vec<(u64, String)> = runs
-        .iter()
-        .filter(|(_, r)| !r.ok())
-        .map(|(s, r)| (s.run_id, r.status.clone()))
-        .collect();
-    let succeeded: Vec<(RunSpec, RunOutput)> = runs
-        .into_iter()
-        .filter(|(_, r)| r.ok())
-        .map(|(s, r)| (s, r.output))
-        .collect();
-    let mut sections = crate::studies::sections(&loaded.descriptor, &succeeded)?;
+    tables.finish(&summary)?;
+    let failed_runs: Vec<(u64, String)> =
+        failed.iter().map(|u| (u.run_id, u.why.clone())).collect();
+    let mut sections = crate::studies::sections(&loaded.descriptor, &runs)?;
     if let Some(movie) = &loaded.descriptor.observe.movie {
-        sections.extend(film_run(&succeeded, movie, staging.dir())?);
+        sections.extend(film_run(&runs, movie, staging.dir())?);
     }
     let resumed = planned.saturating_sub(invocation.ran);
     let meta = ReportMeta {
@@ -361,7 +302,7 @@ pub fn collect(
     crate::report::write(
         staging.dir(),
         &loaded.descriptor,
-        &succeeded,
+        &runs,
         &summary,
         &sections,
         &meta,
@@ -393,19 +334,84 @@ pub fn collect(
     })
 }
 
+/// The plan's records, read one at a time in plan order.
+struct Streamed {
+    /// The staging folder, once a record is read, with the tables written
+    /// into it so far (the long ones, and each run's row).
+    staged: Option<(Staging, store::Tables)>,
+    /// The successful runs, as the studies and the report take them.
+    runs: Runs,
+    /// Once a run is missing, nothing more is gathered: nothing will be written.
+    missing: Vec<Unfinished>,
+    failed: Vec<Unfinished>,
+    /// CPU seconds the runs took, as their records say.
+    cpu_seconds: f64,
+}
+
+/// Read the records of `specs` from `out_dir` one at a time into staged
+/// tables and the runs the report takes; a record made by another
+/// descriptor or bonkers version, or one that does not parse, counts as
+/// missing.
+fn stream(specs: Vec<RunSpec>, out_dir: &Path) -> anyhow::Result<Streamed> {
+    let mut streamed = Streamed {
+        staged: None,
+        runs: Runs::default(),
+        missing: Vec::new(),
+        failed: Vec::new(),
+        cpu_seconds: 0.0,
+    };
+    for spec in specs {
+        let why = match read_record(out_dir, &spec) {
+            Stored::Found(record) if record.fingerprint == fingerprint(&spec) => {
+                if !record.ok() {
+                    let failed = Unfinished::of(&spec, record.status.clone());
+                    streamed.failed.push(failed);
+                }
+                if streamed.missing.is_empty() {
+                    if record.output.cpu_seconds.is_finite() {
+                        streamed.cpu_seconds += record.output.cpu_seconds;
+                    }
+                    let (_, tables) = match &mut streamed.staged {
+                        Some(staged) => staged,
+                        staged => staged.insert(staging(out_dir)?),
+                    };
+                    tables.add(&spec, &record)?;
+                    if record.ok() {
+                        streamed.runs.push(spec, record.output);
+                    }
+                }
+                continue;
+            }
+            Stored::Found(_) => {
+                "its record was made by another descriptor or bonkers version".to_string()
+            }
+            Stored::Unreadable(e) => format!("its record is unreadable: {e}"),
+            Stored::Missing => "no record".to_string(),
+        };
+        if streamed.missing.is_empty() {
+            streamed.staged = None;
+            streamed.runs = Runs::default();
+        }
+        streamed.missing.push(Unfinished::of(&spec, why));
+    }
+    Ok(streamed)
+}
+
+/// A fresh staging folder in `out_dir`, with tables to be written there.
+fn staging(out_dir: &Path) -> anyhow::Result<(Staging, store::Tables)> {
+    let staging = Staging::create(out_dir)?;
+    let tables = store::Tables::new(staging.dir());
+    Ok((staging, tables))
+}
+
 /// Per sweep point and result: ensemble statistics of the successful runs
-/// beside theory. One point at a time, so only that point's outputs are
-/// copied; the plan keeps each point's runs together, in point order.
-fn summarize(runs: &[(RunSpec, RunRecord)]) -> Vec<SummaryRow> {
+/// beside theory, one point at a time (the plan keeps each point's runs
+/// together, in point order).
+fn summarize(runs: &Runs) -> Vec<SummaryRow> {
     let mut rows = Vec::new();
     for point in runs.chunk_by(|a, b| a.0.point_id == b.0.point_id) {
-        let succeeded: Vec<(RunSpec, RunOutput)> = point
-            .iter()
-            .filter(|(_, r)| r.ok())
-            .map(|(s, r)| (s.clone(), r.output.clone()))
-            .collect();
         rows.extend(crate::stats::summary::summarize(
-            &succeeded,
+            point,
             &crate::studies::theory,
         ));
     }
@@ -446,11 +452,7 @@ fn write_manifest(
 /// `[observe] movie`: the run it names (or the first that succeeded),
 /// filmed again from its start and written as `movie.svg`, with the section
 /// that shows it.
-fn film_run(
-    runs: &[(RunSpec, RunOutput)],
-    movie: &MovieSpec,
-    dir: &Path,
-) -> anyhow::Result<Option<ReportSection>> {
+fn film_run(runs: &Runs, movie: &MovieSpec, dir: &Path) -> anyhow::Result<Option<ReportSection>> {
     let named = runs.iter().find(|(s, _)| s.run_id == movie.run);
     let Some((spec, _)) = named.or_else(|| runs.iter().min_by_key(|(s, _)| s.run_id)) else {
         return Ok(None);

@@ -235,8 +235,8 @@ pub fn shell_word(word: &str) -> String {
 /// How the caller holds the output folder.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Claim {
-    /// Alone (exclusive lock); `keep`: hand the records back for a collect.
-    Whole { keep: bool },
+    /// Alone (exclusive lock).
+    Whole,
     /// Beside other parts of the plan (shared lock): remove nothing of theirs.
     Shared,
 }
@@ -255,7 +255,6 @@ fn compute(
         threads: options.threads,
         fresh: options.fresh,
         progress: options.progress,
-        keep: matches!(claim, Claim::Whole { keep: true }),
         shared: claim == Claim::Shared,
         checkpoint_every: match options.checkpoint_every {
             None => Some(checkpoint::DEFAULT_EVERY),
@@ -293,14 +292,8 @@ pub fn run_study(
     let clock = Instant::now();
     let planned = plan_run(path, options)?;
     let _lock = claim(&planned.out_dir)?;
-    let (mut report, runs_wall_seconds) = compute(
-        &planned,
-        Subset::All,
-        options,
-        Claim::Whole { keep: true },
-        simulate,
-        stop,
-    )?;
+    let (report, runs_wall_seconds) =
+        compute(&planned, Subset::All, options, Claim::Whole, simulate, stop)?;
     let invocation = Invocation {
         command_line: options.command_line.clone(),
         started,
@@ -316,8 +309,7 @@ pub fn run_study(
         out_dir,
         ..
     } = planned;
-    let records = std::mem::take(&mut report.records);
-    collect::collect(&loaded, specs, records, &out_dir, &invocation)?;
+    collect::collect(&loaded, specs, &out_dir, &invocation)?;
     Ok(StudyOutcome {
         out_dir,
         planned: report.picked,
@@ -340,7 +332,7 @@ pub fn run_part(
 ) -> Result<RunnerReport, StudyError> {
     let planned = plan_run(path, options)?;
     let _lock = claim(&planned.out_dir)?;
-    let claim = Claim::Whole { keep: false };
+    let claim = Claim::Whole;
     Ok(compute(&planned, subset, options, claim, simulate, stop)?.0)
 }
 
@@ -427,13 +419,7 @@ pub fn collect_folder(
     for other in more {
         join_records(&planned, other)?;
     }
-    collect::collect(
-        &planned.loaded,
-        planned.specs,
-        Vec::new(),
-        out_dir,
-        &invocation,
-    )
+    collect::collect(&planned.loaded, planned.specs, out_dir, &invocation)
 }
 
 /// Copy into the plan's folder the records of `other` it lacks, once
@@ -513,7 +499,6 @@ pub fn collect_study(path: &Path, options: &CollectOptions) -> Result<Collected,
     collect::collect(
         &planned.loaded,
         planned.specs,
-        Vec::new(),
         &planned.out_dir,
         &invocation,
     )

@@ -31,10 +31,6 @@ pub struct RunnerOptions {
     /// Discard saved runs first instead of resuming from them.
     pub fresh: bool,
     pub progress: ProgressMode,
-    /// Also hand back the picked runs' records, resumed or made now, so a
-    /// collect that follows need not parse their files again (seconds for a
-    /// large study); off, the runner holds no run's outputs after saving it.
-    pub keep: bool,
     /// Other invocations (shards) may be writing into the same runs folder:
     /// remove nothing of theirs, neither their temporary files nor records
     /// of runs this plan does not have.
@@ -95,9 +91,6 @@ pub struct RunnerReport {
     /// Runs now that continued from a checkpoint an earlier invocation saved.
     pub continued: usize,
     pub threads: usize,
-    /// With `RunnerOptions::keep`: the record of each picked run that has
-    /// one, by its position in the plan (None for the others); else empty.
-    pub records: Vec<Option<RunRecord>>,
 }
 
 impl RunnerReport {
@@ -176,20 +169,11 @@ pub fn run_subset(
     };
 
     // Each saved record is read once, to learn whether it can be reused.
-    let mut records: Vec<Option<RunRecord>> = Vec::new();
-    if options.keep {
-        records.resize(specs.len(), None);
-    }
     let mut todo = Vec::new();
     for &i in &picked {
         match read_record(out_dir, &specs[i]) {
             Stored::Found(record)
-                if record.ok() && record.fingerprint == fingerprint(&specs[i]) =>
-            {
-                if options.keep {
-                    records[i] = Some(record);
-                }
-            }
+                if record.ok() && record.fingerprint == fingerprint(&specs[i]) => {}
             Stored::Found(record) => {
                 tidied.mismatched += usize::from(record.ok());
                 todo.push(i);
@@ -216,9 +200,10 @@ pub fn run_subset(
         .context("cannot start the worker threads")?;
     let progress = Progress::new(todo.len() as u64, options.progress);
 
-    // Some per run done (and whether it continued from a checkpoint); None
-    // for a run `stop` kept from starting.
-    let done: Vec<anyhow::Result<Option<(RunRecord, bool)>>> = pool.install(|| {
+    // Some per run done (whether it succeeded, and whether it continued
+    // from a checkpoint); None for a run `stop` kept from starting. Its
+    // record is saved, not held.
+    let done: Vec<anyhow::Result<Option<(bool, bool)>>> = pool.install(|| {
         todo.par_iter()
             .map(|&i| {
                 if stop.load(Ordering::SeqCst) {
@@ -235,22 +220,19 @@ pub fn run_subset(
                 save(out_dir, &specs[i], &record)?;
                 remove_checkpoint(&dir, specs[i].seed)?;
                 progress.finished(record.ok(), record.output.collisions);
-                Ok(Some((record, continued)))
+                Ok(Some((record.ok(), continued)))
             })
             .collect()
     });
     progress.finish();
 
     let (mut ran, mut failed, mut interrupted, mut resumed_runs) = (0, 0, false, 0);
-    for (&i, result) in todo.iter().zip(done) {
+    for result in done {
         match result? {
-            Some((record, continued)) => {
+            Some((ok, continued)) => {
                 ran += 1;
                 resumed_runs += usize::from(continued);
-                failed += usize::from(!record.ok());
-                if options.keep {
-                    records[i] = Some(record);
-                }
+                failed += usize::from(!ok);
             }
             None => interrupted = true,
         }
@@ -263,7 +245,6 @@ pub fn run_subset(
         interrupted,
         continued: resumed_runs,
         threads,
-        records,
     })
 }
 

@@ -8,11 +8,12 @@ use crate::model::summary::SummaryRow;
 use crate::runner::record::RunRecord;
 use anyhow::Context;
 use polars::prelude::{
-    Column, CompatLevel, DataFrame, KeyValueMetadata, ParquetReader, ParquetWriter, SchemaExt,
-    SerReader,
+    BatchedWriter, Column, CompatLevel, DataFrame, KeyValueMetadata, ParquetReader, ParquetWriter,
+    SchemaExt, SerReader,
 };
 use polars_parquet::write::schema_to_metadata_key;
 use std::collections::{BTreeMap, HashSet};
+use std::fs::File;
 use std::path::{Path, PathBuf};
 
 /// Write `df` as Parquet at `path`, atomically.
@@ -23,14 +24,21 @@ use std::path::{Path, PathBuf};
 /// filter, so we store the schema of the oldest Arrow compatibility level
 /// instead (`large_string`), which every Arrow tool can query.
 pub fn write_parquet(path: &Path, df: &mut DataFrame) -> anyhow::Result<()> {
-    let schema = schema_to_metadata_key(&df.schema().to_arrow(CompatLevel::oldest()));
-    let metadata = KeyValueMetadata::Static(vec![schema]);
+    let metadata = oldest_schema(df);
     write_via_temp(path, |file| {
         ParquetWriter::new(file)
             .with_key_value_metadata(Some(metadata))
             .finish(df)?;
         Ok(())
     })
+}
+
+/// The Arrow schema of `df` at the oldest compatibility level, as the
+/// Parquet metadata that tells readers the Arrow types.
+fn oldest_schema(df: &DataFrame) -> KeyValueMetadata {
+    KeyValueMetadata::Static(vec![schema_to_metadata_key(
+        &df.schema().to_arrow(CompatLevel::oldest()),
+    )])
 }
 
 /// Read a Parquet table back (tests, `.ci/run`, later analyses).
@@ -57,29 +65,204 @@ const FIXED: [&str; 10] = [
     "status",
 ];
 
-/// Write runs.parquet, series.parquet and histograms.parquet (the last two
-/// only if some run produced them) and summary.parquet. Returns the files written.
+/// The tables of a study, written as its runs stream past in plan order:
+/// series and histogram rows go to their Parquet files a row group at a
+/// time, so memory holds one group, not the study; each run's own row (its
+/// scalars, cost and status, without series or histograms) is kept for
+/// runs.parquet and summary.parquet, written by `finish`.
+pub struct Tables {
+    dir: PathBuf,
+    runs: Vec<(RunSpec, RunRecord)>,
+    series: Streamed,
+    histograms: Streamed,
+    series_rows: SeriesRows,
+    histogram_rows: HistogramRows,
+}
+
+/// Rows per row group of the long tables (polars' default for whole tables).
+const ROW_GROUP: usize = 512 * 512;
+
+impl Tables {
+    /// Tables to be written into `dir` (a staging folder: files are written
+    /// in place, and published together).
+    pub fn new(dir: &Path) -> Tables {
+        Tables {
+            dir: dir.to_path_buf(),
+            runs: Vec::new(),
+            series: Streamed::new(dir.join("series.parquet")),
+            histograms: Streamed::new(dir.join("histograms.parquet")),
+            series_rows: SeriesRows::default(),
+            histogram_rows: HistogramRows::default(),
+        }
+    }
+
+    /// The next run of the plan.
+    pub fn add(&mut self, spec: &RunSpec, record: &RunRecord) -> anyhow::Result<()> {
+        let id = spec.run_id;
+        for s in &record.output.series {
+            let rows = &mut self.series_rows;
+            for (&t, &v) in s.t.iter().zip(&s.value) {
+                rows.id.push(id);
+                rows.t.push(t);
+                rows.observable.push(s.observable.clone());
+                rows.value.push(v);
+            }
+        }
+        for h in &record.output.histograms {
+            let rows = &mut self.histogram_rows;
+            for ((&lo, &hi), &c) in h.lo.iter().zip(&h.hi).zip(&h.count) {
+                rows.id.push(id);
+                rows.observable.push(h.observable.clone());
+                rows.lo.push(lo);
+                rows.hi.push(hi);
+                rows.count.push(c);
+            }
+        }
+        if self.series_rows.id.len() >= ROW_GROUP {
+            self.series
+                .write(std::mem::take(&mut self.series_rows).frame()?)?;
+        }
+        if self.histogram_rows.id.len() >= ROW_GROUP {
+            self.histograms
+                .write(std::mem::take(&mut self.histogram_rows).frame()?)?;
+        }
+        // The run's row: everything but its samples.
+        let output = RunOutput {
+            scalars: record.output.scalars.clone(),
+            series: Vec::new(),
+            histograms: Vec::new(),
+            ..record.output
+        };
+        let row = RunRecord {
+            fingerprint: String::new(),
+            status: record.status.clone(),
+            output,
+            ..*record
+        };
+        self.runs.push((spec.clone(), row));
+        Ok(())
+    }
+
+    /// Write what is left of the long tables (each only if some run produced
+    /// rows), runs.parquet and summary.parquet. Returns the files written.
+    pub fn finish(mut self, summary: &[SummaryRow]) -> anyhow::Result<Vec<PathBuf>> {
+        if !self.series_rows.id.is_empty() {
+            self.series.write(self.series_rows.frame()?)?;
+        }
+        if !self.histogram_rows.id.is_empty() {
+            self.histograms.write(self.histogram_rows.frame()?)?;
+        }
+        let runs = self.dir.join("runs.parquet");
+        write_parquet(&runs, &mut runs_table(&self.runs)?)?;
+        let mut written = vec![runs];
+        written.extend(self.series.finish()?);
+        written.extend(self.histograms.finish()?);
+        let summary_path = self.dir.join("summary.parquet");
+        write_parquet(&summary_path, &mut summary_table(&self.runs, summary)?)?;
+        written.push(summary_path);
+        Ok(written)
+    }
+}
+
+/// Every table at once from runs held in memory, in plan order.
 pub fn write_tables(
     out_dir: &Path,
     runs: &[(RunSpec, RunRecord)],
     summary: &[SummaryRow],
 ) -> anyhow::Result<Vec<PathBuf>> {
-    let mut written = Vec::new();
-    let mut put = |name: &str, mut df: DataFrame| -> anyhow::Result<()> {
-        let path = out_dir.join(name);
-        write_parquet(&path, &mut df)?;
-        written.push(path);
+    let mut tables = Tables::new(out_dir);
+    for (spec, record) in runs {
+        tables.add(spec, record)?;
+    }
+    tables.finish(summary)
+}
+
+/// A Parquet file written a row group at a time; created with its first group.
+struct Streamed {
+    path: PathBuf,
+    writer: Option<BatchedWriter<File>>,
+}
+
+impl Streamed {
+    fn new(path: PathBuf) -> Streamed {
+        Streamed { path, writer: None }
+    }
+
+    fn write(&mut self, df: DataFrame) -> anyhow::Result<()> {
+        let context = || format!("cannot write {}", self.path.display());
+        if self.writer.is_none() {
+            let file = File::create(&self.path).with_context(context)?;
+            let writer = ParquetWriter::new(file)
+                .with_key_value_metadata(Some(oldest_schema(&df)))
+                .batched(df.schema())
+                .with_context(context)?;
+            self.writer = Some(writer);
+        }
+        if let Some(writer) = &mut self.writer {
+            writer.write_batch(&df).with_context(context)?;
+        }
         Ok(())
-    };
-    put("runs.parquet", runs_table(runs)?)?;
-    if runs.iter().any(|(_, r)| !r.output.series.is_empty()) {
-        put("series.parquet", series_table(runs)?)?;
     }
-    if runs.iter().any(|(_, r)| !r.output.histograms.is_empty()) {
-        put("histograms.parquet", histograms_table(runs)?)?;
+
+    fn finish(self) -> anyhow::Result<Option<PathBuf>> {
+        let Some(writer) = self.writer else {
+            return Ok(None);
+        };
+        writer
+            .finish()
+            .with_context(|| format!("cannot write {}", self.path.display()))?;
+        Ok(Some(self.path))
     }
-    put("summary.parquet", summary_table(runs, summary)?)?;
-    Ok(written)
+}
+
+/// series.parquet rows, long form.
+#[derive(Default)]
+struct SeriesRows {
+    id: Vec<u64>,
+    t: Vec<f64>,
+    observable: Vec<String>,
+    value: Vec<f64>,
+}
+
+impl SeriesRows {
+    fn frame(self) -> anyhow::Result<DataFrame> {
+        DataFrame::new(
+            self.id.len(),
+            vec![
+                Column::new("run_id".into(), self.id),
+                Column::new("t".into(), self.t),
+                Column::new("observable".into(), self.observable),
+                Column::new("value".into(), self.value),
+            ],
+        )
+        .context("cannot build series.parquet")
+    }
+}
+
+/// histograms.parquet rows, long form; bins are [lo, hi).
+#[derive(Default)]
+struct HistogramRows {
+    id: Vec<u64>,
+    observable: Vec<String>,
+    lo: Vec<f64>,
+    hi: Vec<f64>,
+    count: Vec<f64>,
+}
+
+impl HistogramRows {
+    fn frame(self) -> anyhow::Result<DataFrame> {
+        DataFrame::new(
+            self.id.len(),
+            vec![
+                Column::new("run_id".into(), self.id),
+                Column::new("observable".into(), self.observable),
+                Column::new("lo".into(), self.lo),
+                Column::new("hi".into(), self.hi),
+                Column::new("count".into(), self.count),
+            ],
+        )
+        .context("cannot build histograms.parquet")
+    }
 }
 
 /// One column per swept key path: f64 if every value is a number, else text.
@@ -215,59 +398,6 @@ fn free_name(name: &str, taken: &mut HashSet<String>) -> String {
     }
     taken.insert(candidate.clone());
     candidate
-}
-
-fn series_table(runs: &[(RunSpec, RunRecord)]) -> anyhow::Result<DataFrame> {
-    let (mut id, mut t, mut obs, mut value) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-    for (spec, r) in runs {
-        for s in &r.output.series {
-            for (&ti, &vi) in s.t.iter().zip(&s.value) {
-                id.push(spec.run_id);
-                t.push(ti);
-                obs.push(s.observable.clone());
-                value.push(vi);
-            }
-        }
-    }
-    let n = id.len();
-    DataFrame::new(
-        n,
-        vec![
-            Column::new("run_id".into(), id),
-            Column::new("t".into(), t),
-            Column::new("observable".into(), obs),
-            Column::new("value".into(), value),
-        ],
-    )
-    .context("cannot build series.parquet")
-}
-
-fn histograms_table(runs: &[(RunSpec, RunRecord)]) -> anyhow::Result<DataFrame> {
-    let (mut id, mut obs, mut lo, mut hi, mut count) =
-        (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
-    for (spec, r) in runs {
-        for h in &r.output.histograms {
-            for ((&l, &u), &c) in h.lo.iter().zip(&h.hi).zip(&h.count) {
-                id.push(spec.run_id);
-                obs.push(h.observable.clone());
-                lo.push(l);
-                hi.push(u);
-                count.push(c);
-            }
-        }
-    }
-    let n = id.len();
-    DataFrame::new(
-        n,
-        vec![
-            Column::new("run_id".into(), id),
-            Column::new("observable".into(), obs),
-            Column::new("lo".into(), lo),
-            Column::new("hi".into(), hi),
-            Column::new("count".into(), count),
-        ],
-    )
-    .context("cannot build histograms.parquet")
 }
 
 /// summary.parquet; parameter columns come from the plan (so text values

@@ -96,22 +96,29 @@ pub struct Stats {
 
 impl Stats {
     pub fn of(values: &[f64]) -> Stats {
-        let n = values.len();
+        let n = values.len() as u64;
         let mean = if n == 0 {
             f64::NAN
         } else {
             values.iter().sum::<f64>() / n as f64
         };
+        let ss: f64 = values.iter().map(|v| (v - mean).powi(2)).sum();
+        Stats::from_moments(n, mean, ss, t_quantile(n.saturating_sub(1)))
+    }
+
+    /// From the count, the mean, the sum of squared deviations from it and
+    /// the Student quantile for n - 1 degrees of freedom (given, so that a
+    /// curve of many samples with one n computes it once).
+    pub fn from_moments(n: u64, mean: f64, ss: f64, quantile: f64) -> Stats {
         let (std, stderr, half) = if n < 2 {
             (f64::NAN, f64::NAN, f64::NAN)
         } else {
-            let ss: f64 = values.iter().map(|v| (v - mean).powi(2)).sum();
             let std = (ss / (n - 1) as f64).sqrt();
             let stderr = std / (n as f64).sqrt();
-            (std, stderr, t_quantile(n as u64 - 1) * stderr)
+            (std, stderr, quantile * stderr)
         };
         Stats {
-            n: n as u64,
+            n,
             mean,
             std,
             stderr,

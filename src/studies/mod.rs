@@ -16,9 +16,9 @@ use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
 use crate::observe::Context;
 use crate::scene::Built;
+use crate::stats::ensemble::Runs;
 pub use options::StudyOption;
 
 /// Every study bonkers knows: one line each.
@@ -86,12 +86,11 @@ pub trait Study: Sync {
     fn theory(&self, _d: &Descriptor, _result: &str) -> Option<f64> {
         None
     }
-    /// Its part of the report, from the runs of the plan.
-    fn section(
-        &self,
-        d: &Descriptor,
-        runs: &[(RunSpec, RunOutput)],
-    ) -> anyhow::Result<ReportSection>;
+    /// Its part of the report, from the successful runs of the plan: their
+    /// scalars and histograms, each point's series means (`runs.mean`), and
+    /// the series themselves only for the first `stats::ensemble::KEPT`
+    /// replicas of each point.
+    fn section(&self, d: &Descriptor, runs: &Runs) -> anyhow::Result<ReportSection>;
 }
 
 pub fn find(name: &str) -> Option<&'static dyn Study> {
@@ -132,9 +131,6 @@ pub fn theory(d: &Descriptor, result: &str) -> Option<f64> {
 }
 
 /// The named studies' report sections, in descriptor order.
-pub fn sections(
-    d: &Descriptor,
-    runs: &[(RunSpec, RunOutput)],
-) -> anyhow::Result<Vec<ReportSection>> {
+pub fn sections(d: &Descriptor, runs: &Runs) -> anyhow::Result<Vec<ReportSection>> {
     named(d).map(|s| s.section(d, runs)).collect()
 }

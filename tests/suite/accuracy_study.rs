@@ -6,6 +6,7 @@ use bonkers::descriptor::load::parse;
 use bonkers::model::run_output::RunOutput;
 use bonkers::model::run_spec::RunSpec;
 use bonkers::runner::plan::plan;
+use bonkers::stats::ensemble::Runs;
 use bonkers::studies::{self, Study};
 
 fn ensemble(text: &str) -> Vec<(RunSpec, RunOutput)> {
@@ -72,7 +73,7 @@ fn a_small_study_compares_both_integrators() {
         assert!(out.series("piston_position").is_none());
     }
     let section = studies::accuracy::Accuracy
-        .section(&runs[0].0.descriptor, &runs)
+        .section(&runs[0].0.descriptor, &Runs::from(runs.clone()))
         .unwrap();
     assert_eq!(
         section.figures.len(),

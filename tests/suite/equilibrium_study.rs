@@ -5,6 +5,7 @@
 use crate::study_common::ensemble;
 use bonkers::model::run_output::RunOutput;
 use bonkers::model::run_spec::RunSpec;
+use bonkers::stats::ensemble::Runs;
 use bonkers::stats::summary::Stats;
 use bonkers::studies::Study;
 use bonkers::studies::equilibrium::{Ensemble, Equilibrium, tests_of};
@@ -141,7 +142,9 @@ fn mackay_ten_velocities_positions_and_halves() {
     assert!((k.mean + 0.5).abs() < Z * k.stderr, "{k:?}");
     // The section renders its charts and the dimple paragraph.
     let d = &runs[0].0.descriptor;
-    let section = Equilibrium.section(d, &runs).expect("section");
+    let section = Equilibrium
+        .section(d, &Runs::from(runs.clone()))
+        .expect("section");
     assert!(section.markdown.contains("The dimple in P(v₁)"));
     assert!(
         section

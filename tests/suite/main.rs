@@ -40,6 +40,7 @@ mod study_common;
 mod study_descriptor;
 mod study_docs;
 mod study_errors;
+mod study_memory;
 mod study_plan;
 mod study_progress;
 mod study_runner;

@@ -8,6 +8,7 @@ use bonkers::model::report::{Figure, ReportSection};
 use bonkers::model::run_output::{Histogram, RunOutput, Series};
 use bonkers::model::run_spec::RunSpec;
 use bonkers::report::{ReportMeta, write};
+use bonkers::stats::ensemble::Runs;
 use bonkers::stats::summary::summarize;
 use std::path::Path;
 
@@ -218,7 +219,15 @@ fn full_report_writes_every_file() {
         presents: Vec::new(),
     }];
     let d = descriptor(SWEPT);
-    write(dir, &d, &runs, &summary, &sections, &meta(vec![])).expect("report written");
+    write(
+        dir,
+        &d,
+        &Runs::from(runs.clone()),
+        &summary,
+        &sections,
+        &meta(vec![]),
+    )
+    .expect("report written");
 
     for f in [
         "report.md",
@@ -292,7 +301,15 @@ fn nan_results_and_failed_runs_do_not_panic() {
     }
     let summary = summarize(&runs, &|_: &Descriptor, _: &str| Some(1.0));
     let failed = vec![(99, "overlap at start:\nparticle 3 | particle 4".to_string())];
-    write(dir.path(), &d, &runs, &summary, &[], &meta(failed)).expect("report written");
+    write(
+        dir.path(),
+        &d,
+        &Runs::from(runs.clone()),
+        &summary,
+        &[],
+        &meta(failed),
+    )
+    .expect("report written");
     let md = std::fs::read_to_string(dir.path().join("report.md")).expect("md");
     assert!(
         md.contains("## Failed runs")
@@ -351,7 +368,15 @@ fn degenerate_data_gives_placeholders_not_panics() {
         let dir = tempfile::tempdir().expect("temp dir");
         let theory = |_: &Descriptor, name: &str| (name == "flat").then_some(2.0);
         let summary = summarize(&runs, &theory);
-        write(dir.path(), &d, &runs, &summary, &[], &meta(vec![])).expect("report written");
+        write(
+            dir.path(),
+            &d,
+            &Runs::from(runs.clone()),
+            &summary,
+            &[],
+            &meta(vec![]),
+        )
+        .expect("report written");
         assert!(dir.path().join("index.html").is_file());
         check_svgs(dir.path());
         if !runs.is_empty() {

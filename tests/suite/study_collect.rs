@@ -50,7 +50,7 @@ fn missing(err: &StudyError) -> &MissingRuns {
     match err {
         StudyError::Other(e) => e
             .downcast_ref::<MissingRuns>()
-            .expect("a MissingRuns error"),
+            .unwrap_or_else(|| panic!("a MissingRuns error, not {e:#}")),
         other => panic!("expected missing runs, got {other}"),
     }
 }

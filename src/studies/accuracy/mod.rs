@@ -15,7 +15,7 @@ use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs;
 
 /// The results it adds to each run (the frequency only with a piston).
 pub const RESULTS: &[&str] = &["collision_rate", "beta_pressure", "piston_frequency"];
@@ -86,11 +86,7 @@ impl Study for Accuracy {
         }
         Ok(())
     }
-    fn section(
-        &self,
-        _: &Descriptor,
-        runs: &[(RunSpec, RunOutput)],
-    ) -> anyhow::Result<ReportSection> {
+    fn section(&self, _: &Descriptor, runs: &Runs) -> anyhow::Result<ReportSection> {
         Ok(section::section(runs))
     }
 }

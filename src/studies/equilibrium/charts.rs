@@ -437,18 +437,6 @@ pub fn scatter(
     })
 }
 
-/// The mean over replicas of a series at each sample (runs of a group
-/// share their sample times), with its standard error.
-pub fn mean_series(runs: &Runs, name: &str) -> Option<(Vec<f64>, Vec<Stats>)> {
-    let series: Vec<_> = runs.iter().filter_map(|(_, o)| o.series(name)).collect();
-    let first = series.first()?;
-    let len = series.iter().map(|s| s.value.len()).min()?;
-    let stats = (0..len)
-        .map(|i| Stats::of(&series.iter().map(|s| s.value[i]).collect::<Vec<f64>>()))
-        .collect();
-    Some((first.t[..len].to_vec(), stats))
-}
-
 /// A series' mean over replicas with a ±1 standard error band, and a
 /// reference level.
 pub fn settling(

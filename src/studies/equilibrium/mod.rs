@@ -20,7 +20,7 @@ use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs;
 pub use ensemble::Ensemble;
 pub use tests_of::{Tests, tests_of};
 
@@ -85,11 +85,7 @@ impl Study for Equilibrium {
             _ => None,
         }
     }
-    fn section(
-        &self,
-        _: &Descriptor,
-        runs: &[(RunSpec, RunOutput)],
-    ) -> anyhow::Result<ReportSection> {
+    fn section(&self, _: &Descriptor, runs: &Runs) -> anyhow::Result<ReportSection> {
         section::section(runs)
     }
 }

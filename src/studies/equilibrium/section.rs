@@ -11,6 +11,7 @@ use crate::model::chart::ChartSpec;
 use crate::model::report::{Figure, ReportSection};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs as AllRuns;
 use crate::stats::format::{num, pm};
 use crate::stats::replicas::Agreement;
 use crate::stats::summary::Stats;
@@ -22,6 +23,7 @@ pub const REJECT: f64 = 4.0;
 
 /// A group of runs: a case, or a sweep point.
 struct Group<'a> {
+    point: u64,
     label: String,
     slug: String,
     runs: Vec<(Ensemble, &'a RunOutput)>,
@@ -41,6 +43,7 @@ fn groups(runs: &[(RunSpec, RunOutput)]) -> Vec<Group<'_>> {
                     None => describe(&e),
                 };
                 Group {
+                    point: spec.point_id,
                     slug: format!(
                         "{}{}",
                         if spec.case.is_some() { "case" } else { "point" },
@@ -91,7 +94,7 @@ fn verdict(a: &Option<Agreement>) -> &'static str {
     }
 }
 
-pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
+pub fn section(runs: &AllRuns) -> anyhow::Result<ReportSection> {
     let mut md = String::from(INTRO);
     let mut figures = Vec::new();
     let mut rods_rows = String::new();
@@ -245,7 +248,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
             }
         }
         if e.dimension > 1
-            && let Some((time, mean)) = charts::mean_series(&view, "speed_std")
+            && let Some((time, mean)) = runs.mean(g.point, "speed_std")
         {
             let kt = view.iter().map(|(e, _)| e.kt().sqrt()).sum::<f64>() / view.len() as f64;
             let reference = settling::maxwell_speed_std(e.dimension) * kt;
@@ -283,7 +286,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
                     view.len()
                 ),
             );
-            if let Some((time, energy)) = charts::mean_series(&view, "kinetic_energy") {
+            if let Some((time, energy)) = runs.mean(g.point, "kinetic_energy") {
                 add(
                     "energy",
                     Some(charts::settling(

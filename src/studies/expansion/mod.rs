@@ -11,7 +11,7 @@ use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs;
 pub use measure::{Gas, late, relaxation_time, temperature};
 
 /// The series every run records for it.
@@ -96,11 +96,7 @@ impl Study for Expansion {
             _ => None,
         }
     }
-    fn section(
-        &self,
-        _: &Descriptor,
-        runs: &[(RunSpec, RunOutput)],
-    ) -> anyhow::Result<ReportSection> {
+    fn section(&self, _: &Descriptor, runs: &Runs) -> anyhow::Result<ReportSection> {
         section::section(runs)
     }
 }

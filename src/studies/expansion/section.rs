@@ -9,6 +9,7 @@ use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::report::{Figure, ReportSection};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs;
 use crate::stats::format::{count, num, pm};
 use crate::stats::summary::Stats;
 use crate::studies::curves::mean_with_band;
@@ -22,25 +23,6 @@ pub const COMPARED: f64 = 3.0;
 /// The charts show the first this many collisionless relaxation times (the
 /// expansion and, in a fluid, its sloshing); the rest is noise about 1/2.
 pub const SHOWN: f64 = 8.0;
-
-/// The ensemble mean of the left fraction at each sample time, its
-/// standard error over the runs and the number of runs (runs of one point
-/// share their sample times; a shorter record ends the curve).
-pub fn mean_curve(runs: &[&RunOutput]) -> (Vec<f64>, Vec<Stats>) {
-    let series: Vec<_> = runs
-        .iter()
-        .filter_map(|o| o.series("left_fraction"))
-        .collect();
-    let Some(first) = series.first() else {
-        return (Vec::new(), Vec::new());
-    };
-    let len = series.iter().map(|s| s.value.len()).min().unwrap_or(0);
-    let t = first.t[..len].to_vec();
-    let stats = (0..len)
-        .map(|i| Stats::of(&series.iter().map(|s| s.value[i]).collect::<Vec<f64>>()))
-        .collect();
-    (t, stats)
-}
 
 /// Largest |mean - theory| over the collisionless prediction's own standard
 /// error of a mean over `runs` runs of `n` particles, sqrt(f (1 - f) / (n
@@ -71,7 +53,7 @@ pub fn largest_z(
         .fold(0.0, f64::max)
 }
 
-pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
+pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
     let mut by_point: BTreeMap<u64, Vec<&(RunSpec, RunOutput)>> = BTreeMap::new();
     for r in runs.iter().filter(|(s, _)| s.case.is_none()) {
         by_point.entry(r.0.point_id).or_default().push(r);
@@ -97,7 +79,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
             .as_ref()
             .zip(temperature(&spec.descriptor))
             .map(|(g, kt)| g.free(kt));
-        let (t, mean) = mean_curve(&outs);
+        let (t, mean) = runs.mean(*id, "left_fraction").unwrap_or_default();
         let tau_free = free.as_ref().map_or(f64::NAN, |f| f.relaxation_time());
         let curve: Vec<f64> = mean.iter().map(|s| s.mean).collect();
         let tau_mean = relaxation_time(&t, &curve);

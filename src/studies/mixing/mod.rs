@@ -18,7 +18,7 @@ use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs;
 pub use disks::diffusion;
 pub use measure::{first_passage, late_mean, line};
 
@@ -88,11 +88,7 @@ impl Study for Mixing {
             _ => None,
         }
     }
-    fn section(
-        &self,
-        _: &Descriptor,
-        runs: &[(RunSpec, RunOutput)],
-    ) -> anyhow::Result<ReportSection> {
+    fn section(&self, _: &Descriptor, runs: &Runs) -> anyhow::Result<ReportSection> {
         section::section(runs)
     }
 }

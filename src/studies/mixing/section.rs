@@ -6,6 +6,7 @@ use super::{section_disks, section_rods};
 use crate::model::report::{Figure, ReportSection};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs;
 use crate::stats::summary::Stats;
 use std::collections::BTreeMap;
 
@@ -13,6 +14,8 @@ use std::collections::BTreeMap;
 pub struct Point<'a> {
     pub spec: &'a RunSpec,
     pub outs: Vec<&'a RunOutput>,
+    /// Every run of the plan, for the point's series means.
+    all: &'a Runs,
 }
 
 impl Point<'_> {
@@ -50,15 +53,7 @@ impl Point<'_> {
     /// error over the runs (runs of a point share their sample times; a
     /// shorter record ends the curve).
     pub fn mean_curve(&self, name: &str) -> (Vec<f64>, Vec<Stats>) {
-        let series: Vec<_> = self.outs.iter().filter_map(|o| o.series(name)).collect();
-        let Some(first) = series.first() else {
-            return (Vec::new(), Vec::new());
-        };
-        let len = series.iter().map(|s| s.value.len()).min().unwrap_or(0);
-        let stats = (0..len)
-            .map(|i| Stats::of(&series.iter().map(|s| s.value[i]).collect::<Vec<f64>>()))
-            .collect();
-        (first.t[..len].to_vec(), stats)
+        self.all.mean(self.spec.point_id, name).unwrap_or_default()
     }
 }
 
@@ -69,14 +64,15 @@ fn dimension(spec: &RunSpec) -> usize {
         .unwrap_or(0)
 }
 
-pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
+pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
     let mut by_point: BTreeMap<u64, Point> = BTreeMap::new();
-    for (spec, out) in runs {
+    for (spec, out) in runs.iter() {
         by_point
             .entry(spec.point_id)
             .or_insert_with(|| Point {
                 spec,
                 outs: Vec::new(),
+                all: runs,
             })
             .outs
             .push(out);

@@ -18,6 +18,7 @@ use crate::model::need::Need;
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs;
 use crate::theory::piston::{Law, PistonSystem};
 use crate::theory::piston_equilibrium::{degrees_of_freedom, oscillator_share};
 /// The piston's frequency estimator, for studies that measure one too.
@@ -117,11 +118,7 @@ impl Study for Piston {
     fn theory(&self, d: &Descriptor, result: &str) -> Option<f64> {
         theory(d, result)
     }
-    fn section(
-        &self,
-        _: &Descriptor,
-        runs: &[(RunSpec, RunOutput)],
-    ) -> anyhow::Result<ReportSection> {
+    fn section(&self, _: &Descriptor, runs: &Runs) -> anyhow::Result<ReportSection> {
         section(runs)
     }
 }

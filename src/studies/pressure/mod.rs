@@ -18,7 +18,7 @@ use super::{Finished, Start, Study};
 use crate::model::descriptor::Descriptor;
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs;
 
 pub use equations::{Equation, of as equations};
 pub use packing::of_scene as described_packing;
@@ -98,11 +98,7 @@ impl Study for Pressure {
         }
         Some((equations::of(dimension)[0].z)(eta))
     }
-    fn section(
-        &self,
-        _: &Descriptor,
-        runs: &[(RunSpec, RunOutput)],
-    ) -> anyhow::Result<ReportSection> {
+    fn section(&self, _: &Descriptor, runs: &Runs) -> anyhow::Result<ReportSection> {
         section::section(runs)
     }
 }
