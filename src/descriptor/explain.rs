@@ -80,9 +80,16 @@ fn humanize_types(raw: &str) -> String {
     let mut s = raw.to_string();
     for (rust, toml) in [
         ("expected f64", "expected a number"),
-        ("expected usize", "expected a whole number >= 0"),
-        ("expected u64", "expected a whole number >= 0"),
-        ("expected u32", "expected a whole number >= 0"),
+        // TOML integers stop at 2^63 - 1, below usize's and u64's limits.
+        (
+            "expected usize",
+            "expected a whole number from 0 to 9223372036854775807",
+        ),
+        (
+            "expected u64",
+            "expected a whole number from 0 to 9223372036854775807",
+        ),
+        ("expected u32", "expected a whole number from 0 to 4294967295"),
         ("expected a sequence", "expected a list `[...]`"),
         ("expected a map", "expected a table"),
     ] {

@@ -38,7 +38,21 @@ pub fn positive(key: &str, v: f64) -> Check {
     if v.is_finite() && v > 0.0 {
         Ok(())
     } else {
-        bad(key, format!("must be a positive number, got {v}"), None)
+        bad(
+            key,
+            format!("must be a positive number, got {}", compact(v)),
+            None,
+        )
+    }
+}
+
+/// A number as a message shows it: as written for everyday magnitudes,
+/// `1e300` rather than three hundred digits beyond them.
+pub fn compact(x: f64) -> String {
+    if x == 0.0 || (x.is_finite() && (1e-4..1e16).contains(&x.abs())) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
     }
 }
 
@@ -47,6 +61,10 @@ pub fn non_negative(key: &str, v: f64) -> Check {
     if v.is_finite() && v >= 0.0 {
         Ok(())
     } else {
-        bad(key, format!("must be a number >= 0, got {v}"), None)
+        bad(
+            key,
+            format!("must be a number >= 0, got {}", compact(v)),
+            None,
+        )
     }
 }

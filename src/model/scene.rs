@@ -4,6 +4,7 @@
 //! validates them) and the scene builder (which turns them into an engine
 //! system). Every field has a default so a bundled preset can fill the rest.
 
+use crate::model::shared::Shared;
 use serde::{Deserialize, Serialize};
 
 /// The physical setup of one run.
@@ -174,8 +175,8 @@ pub enum Placement {
         #[serde(default)]
         from: Option<CompressFrom>,
     },
-    /// Explicit positions, one list per particle.
-    Explicit { positions: Vec<Vec<f64>> },
+    /// Explicit positions, one list per particle (shared by the plan's points).
+    Explicit { positions: Shared<Vec<Vec<f64>>> },
 }
 
 /// Where a compression starts.
@@ -213,8 +214,9 @@ pub enum Velocities {
     },
     /// Every particle with the same velocity vector (MacKay's piston start).
     Equal { velocity: Vec<f64> },
-    /// Explicit velocities, one list per particle (piston not included).
-    Explicit { velocities: Vec<Vec<f64>> },
+    /// Explicit velocities, one list per particle (piston not included;
+    /// shared by the plan's points).
+    Explicit { velocities: Shared<Vec<Vec<f64>>> },
 }
 
 fn one_f() -> f64 {
