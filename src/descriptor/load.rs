@@ -202,6 +202,12 @@ pub fn from_owned_table(file: &str, table: toml::Table) -> Result<Descriptor, De
 pub fn show(value: &toml::Value) -> String {
     match value {
         toml::Value::String(s) => format!("{s:?}"),
+        // `1e-300`, not three hundred digits (Rust's Debug form is valid TOML).
+        toml::Value::Float(f) if f.is_finite() => format!("{f:?}"),
+        toml::Value::Array(items) => {
+            let items: Vec<String> = items.iter().map(show).collect();
+            format!("[{}]", items.join(", "))
+        }
         other => other.to_string(),
     }
 }

@@ -3,8 +3,11 @@
 
 use crate::model::descriptor::{Descriptor, Scale, SweepMode, SweepValues};
 use crate::model::scene::SceneSpec;
+use std::collections::HashSet;
 
-pub use crate::model::problem::{Check, Problem, bad, compact, non_negative, positive};
+pub use crate::model::problem::{
+    Check, Problem, bad, compact, name_fits, non_negative, positive,
+};
 
 /// Top-level sections a sweep may set. `[study]` is not among them: replicas
 /// and seeds shape the plan itself, so they cannot vary within it.
@@ -84,6 +87,7 @@ pub fn study(d: &Descriptor) -> Check {
         && name
             .chars()
             .all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c));
+    name_fits("study.name", name)?;
     if !ok {
         return bad(
             "study.name",
@@ -283,9 +287,10 @@ fn repeats(at: &str, values: &[toml::Value]) -> Check {
     Ok(())
 }
 
-/// `[[case]]` number `i`: a name that can label its rows, used once, replicas
+/// `[[case]]` number `i` (`named`: the names of those before it): a name
+/// that can label its rows, used once, replicas
 /// if given at least 1, keys that a sweep could set.
-pub fn case(d: &Descriptor, i: usize) -> Check {
+pub fn case<'d>(d: &'d Descriptor, i: usize, named: &mut HashSet<&'d str>) -> Check {
     let case = &d.case[i];
     let at = format!("case.{i}");
     let ok = !case.name.is_empty()
@@ -300,7 +305,8 @@ pub fn case(d: &Descriptor, i: usize) -> Check {
             Some("use letters, digits, `-` or `_`, e.g. `name = \"mackay\"`"),
         );
     }
-    if d.case[..i].iter().any(|c| c.name == case.name) {
+    name_fits(&format!("{at}.name"), &case.name)?;
+    if !named.insert(&case.name) {
         return bad(
             format!("{at}.name"),
             format!("case \"{}\" is defined twice", case.name),

@@ -163,8 +163,8 @@ pub enum Placement {
     /// radii; the target packing fraction is what the species and box imply.
     /// Reaches dense fluids, polycrystals and glasses up to packing fraction
     /// 0.88 (2D; above about 0.87 it may jam first) or 0.64 (3D), less in
-    /// small walled boxes; beyond, use "lattice". In 1D it is the exact random
-    /// placement.
+    /// small walled boxes; beyond, use "lattice". 2D/3D only: in 1D "random"
+    /// is exact at any density.
     Compress {
         /// How fast radii grow, as a fraction of their final size per unit time,
         /// with the particles kept at kT = 1 meanwhile (default 0.005). Slower

@@ -6,6 +6,7 @@
 use crate::descriptor::validate::resolved;
 use crate::descriptor::validate_scene::{count, dimension};
 use crate::model::descriptor::Descriptor;
+use crate::model::run_spec::RunSpec;
 use crate::model::scene::{Mass, PistonSpec, SceneSpec, Velocities};
 use std::f64::consts::PI;
 
@@ -21,6 +22,8 @@ pub struct RunCost {
     /// Pair collisions, equilibration included.
     pub collisions: f64,
     pub dimension: usize,
+    /// Pair collisions per unit time (the piston's included).
+    pub rate: f64,
     /// Of the collisions per unit time, those of the piston (0 without one).
     pub piston_share: f64,
 }
@@ -47,8 +50,24 @@ pub fn run_cost(d: &Descriptor) -> Option<RunCost> {
     Some(RunCost {
         collisions: measured + timed(d.run.equilibrate),
         dimension: dimension(&scene),
+        rate,
         piston_share: if rate > 0.0 { piston / rate } else { 0.0 },
     })
+}
+
+/// One estimate per sweep point or case (its replicas differ only in their
+/// seeds): the index of its first run, its cost per run, and its runs.
+pub fn by_point(specs: &[RunSpec]) -> Vec<(usize, Option<RunCost>, f64)> {
+    let mut costs: Vec<(usize, Option<RunCost>, f64)> = Vec::new();
+    for (i, spec) in specs.iter().enumerate() {
+        if i == 0 || specs[i - 1].point_id != spec.point_id {
+            costs.push((i, run_cost(&spec.descriptor), 0.0));
+        }
+        if let Some(last) = costs.last_mut() {
+            last.2 += 1.0;
+        }
+    }
+    costs
 }
 
 /// Pair collisions per unit time in a scene at its initial temperature

@@ -12,7 +12,7 @@ use crate::descriptor::validate;
 use crate::model::descriptor::Descriptor;
 use crate::model::run_spec::RunSpec;
 use crate::runner::seeds::{point_key, run_seed};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
 /// Expand the descriptor into runs: the sweep's (run_id = point_id *
@@ -97,6 +97,7 @@ fn cases(loaded: &Loaded, specs: &mut Vec<RunSpec>) -> Result<(), DescriptorErro
     let base = PointBase::new(&loaded.file, &loaded.table, d);
     let mut checks = validate::Points::default();
     let no_params = Arc::new(Vec::new());
+    let mut named = HashSet::new();
     for (i, case) in d.case.iter().enumerate() {
         let at = format!("case.{i}");
         let fail = |message: String, hint: Option<String>| {
@@ -106,7 +107,7 @@ fn cases(loaded: &Loaded, specs: &mut Vec<RunSpec>) -> Result<(), DescriptorErro
                     .key(&at);
             hint.into_iter().fold(err, DescriptorError::hint)
         };
-        validate::case(d, i).map_err(|p| fail(format!("`{}`: {}", p.key, p.message), p.hint))?;
+        validate::case(d, i, &mut named).map_err(|p| fail(format!("`{}`: {}", p.key, p.message), p.hint))?;
         let settings: Vec<(String, toml::Value)> = case
             .set
             .iter()
