@@ -387,6 +387,7 @@ fn slurm_job(a: &SlurmArgs) -> Result<i32, StudyError> {
     let loaded = pipeline::prepare(&a.plan.file, a.plan.replicas, a.plan.quick)?;
     pipeline::confirm_size(&loaded, a.plan.yes)?;
     let specs = plan::plan(&loaded)?;
+    pipeline::confirm_cost(&loaded, &specs, a.plan.yes)?;
     let out = a
         .out
         .clone()
@@ -514,6 +515,7 @@ fn validate(a: &PlanArgs) -> Result<i32, StudyError> {
     let loaded = pipeline::prepare(&a.file, a.replicas, a.quick)?;
     pipeline::confirm_size(&loaded, a.yes)?;
     let specs = plan::plan(&loaded)?;
+    pipeline::confirm_cost(&loaded, &specs, a.yes)?;
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     emit(&describe_plan(&loaded, &specs, threads));
     Ok(0)
@@ -546,18 +548,10 @@ pub fn describe_plan(loaded: &Loaded, specs: &[RunSpec], threads: usize) -> Stri
         specs.len()
     );
     // One estimate per point (replicas differ only in their seeds), times its runs.
-    let mut costs: Vec<(Option<RunCost>, f64)> = Vec::new();
-    for (i, spec) in specs.iter().enumerate() {
-        if i == 0 || specs[i - 1].point_id != spec.point_id {
-            costs.push((estimate::run_cost(&spec.descriptor), 0.0));
-        }
-        if let Some(last) = costs.last_mut() {
-            last.1 += 1.0;
-        }
-    }
+    let costs = estimate::by_point(specs);
     let known: Vec<(RunCost, f64)> = costs
         .iter()
-        .filter_map(|(c, n)| Some(((*c)?, *n)))
+        .filter_map(|(_, c, n)| Some(((*c)?, *n)))
         .collect();
     if known.is_empty() || known.len() < costs.len() {
         out += "  estimated cost: unknown (a scene could not be resolved)\n";

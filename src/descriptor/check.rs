@@ -3,8 +3,8 @@
 //! fit its key at that sweep key, a value a preset supplied at the preset.
 
 use crate::descriptor::errors::DescriptorError;
-use crate::descriptor::load::{Loaded, from_table, show};
-use crate::descriptor::overrides::apply_overrides;
+use crate::descriptor::load::{Loaded, show};
+use crate::descriptor::point::{PointBase, PointError};
 use crate::descriptor::validate;
 use crate::model::descriptor::{Descriptor, SweepMode, SweepValues};
 
@@ -28,11 +28,12 @@ pub fn check(loaded: &Loaded) -> Result<(), DescriptorError> {
             (k, values, picked)
         })
         .collect();
+    let base = PointBase::new(&loaded.file, &loaded.table, d);
     // Each value must fit its key's type (alone: types do not interact).
     for (key, values, picked) in &axes {
         validate::sweep_key(key).map_err(|p| sweep_error(loaded, key, p.message, p.hint))?;
         for &i in picked {
-            point_descriptor(loaded, &[((*key).clone(), values[i].clone())])?;
+            point_descriptor(loaded, &base, &[((*key).clone(), values[i].clone())])?;
         }
     }
     // Then whole points: the first, and each representative value in the
@@ -50,10 +51,11 @@ pub fn check(loaded: &Loaded) -> Result<(), DescriptorError> {
             })
             .collect()
     };
-    check_point(loaded, &at(0, None), None)?;
+    let mut checks = validate::Points::default();
+    check_point(loaded, &base, &mut checks, &at(0, None), None)?;
     for (a, (_, _, picked)) in axes.iter().enumerate() {
         for &i in picked {
-            check_point(loaded, &at(i, Some((a, i))), Some(a))?;
+            check_point(loaded, &base, &mut checks, &at(i, Some((a, i))), Some(a))?;
         }
     }
     Ok(())
@@ -63,23 +65,25 @@ pub fn check(loaded: &Loaded) -> Result<(), DescriptorError> {
 /// is reported at that sweep key.
 fn point_descriptor(
     loaded: &Loaded,
+    base: &PointBase<'_>,
     params: &[(String, toml::Value)],
 ) -> Result<Descriptor, DescriptorError> {
-    let mut table = loaded.table.clone();
-    for (key, value) in params {
-        apply_overrides(&mut table, key, value.clone())
-            .map_err(|m| sweep_error(loaded, key, format!("value {}: {m}", show(value)), None))?;
-    }
-    from_table(&loaded.file, &table).map_err(|e| {
-        let (key, value) = &params[0];
-        let mut err = sweep_error(
-            loaded,
-            key,
-            format!("value {}: {}", show(value), e.message),
-            None,
-        );
-        err.hints = e.hints;
-        err
+    base.descriptor(params).map_err(|e| match e {
+        PointError::Apply(n, m) => {
+            let (key, value) = &params[n];
+            sweep_error(loaded, key, format!("value {}: {m}", show(value)), None)
+        }
+        PointError::Typed(e) => {
+            let (key, value) = &params[0];
+            let mut err = sweep_error(
+                loaded,
+                key,
+                format!("value {}: {}", show(value), e.message),
+                None,
+            );
+            err.hints = e.hints;
+            err
+        }
     })
 }
 
@@ -88,11 +92,13 @@ fn point_descriptor(
 /// descriptor has without its sweep, at its own key.
 fn check_point(
     loaded: &Loaded,
+    base: &PointBase<'_>,
+    checks: &mut validate::Points,
     params: &[(String, toml::Value)],
     blamed: Option<usize>,
 ) -> Result<(), DescriptorError> {
-    let d = point_descriptor(loaded, params)?;
-    let Err(p) = validate::point(&d) else {
+    let d = point_descriptor(loaded, base, params)?;
+    let Err(p) = checks.point(&d) else {
         return Ok(());
     };
     let related = |k: &str| k == p.key || p.key.starts_with(&format!("{k}."));

@@ -7,7 +7,23 @@ use crate::descriptor::locate::{line_col, path_at};
 
 /// A syntax or shape error from toml/serde, placed and explained.
 pub fn toml_error(file: &str, text: &str, e: &toml::de::Error) -> DescriptorError {
-    let (mut message, hints) = explain(e.message());
+    let (mut message, mut hints) = explain(e.message());
+    let spanned = e.span().and_then(|s| text.get(s)).map(str::trim);
+    // Say which key, and what a "map" was (toml reads a date-time as one).
+    if message == "duplicate key"
+        && let Some(key) = spanned
+    {
+        message = format!("duplicate key `{key}`: it is set twice in the same table");
+        hints.push(format!("keep one `{key} = ...`"));
+    }
+    if message.starts_with("invalid type: map")
+        && let Some(date) = spanned.filter(|s| s.parse::<toml::value::Datetime>().is_ok())
+    {
+        message = message.replacen("map", &format!("date-time {date}"), 1);
+    }
+    if e.span().is_none() && message.contains("recursion") {
+        return nested_too_deeply(file, text);
+    }
     let offset = e.span().map(|s| s.start);
     if let Some(path) = offset.and_then(|o| path_at(text, o)) {
         message = match path.rsplit_once('.') {
@@ -21,6 +37,38 @@ pub fn toml_error(file: &str, text: &str, e: &toml::de::Error) -> DescriptorErro
     }
     let err = DescriptorError::new(file, message).at(offset.map(|o| line_col(text, o)));
     hints.into_iter().fold(err, DescriptorError::hint)
+}
+
+/// toml gives up on deep nesting without saying where: point at the first
+/// line nested deepest (a `[a.b.c...]` header's dots, or brackets open).
+fn nested_too_deeply(file: &str, text: &str) -> DescriptorError {
+    let depth = |line: &str| {
+        let line = line.trim_start();
+        if line.starts_with('[') && !line.starts_with("[[") {
+            return line.split('#').next().unwrap_or("").matches('.').count() + 1;
+        }
+        let (mut open, mut deepest) = (0usize, 0usize);
+        for c in line.chars() {
+            match c {
+                '[' | '{' => open += 1,
+                ']' | '}' => open = open.saturating_sub(1),
+                _ => {}
+            }
+            deepest = deepest.max(open);
+        }
+        deepest
+    };
+    let (line, levels) = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| (i + 1, depth(l)))
+        .fold((1, 0), |best, x| if x.1 > best.1 { x } else { best });
+    DescriptorError::new(
+        file,
+        format!("nested too deeply ({levels} levels): more than the TOML reader follows"),
+    )
+    .at(Some((line, 1)))
+    .hint("a descriptor's tables and lists are a few levels deep; see docs/descriptor.md")
 }
 
 /// Turn serde's terse messages into what a user can act on.
@@ -80,9 +128,16 @@ fn humanize_types(raw: &str) -> String {
     let mut s = raw.to_string();
     for (rust, toml) in [
         ("expected f64", "expected a number"),
-        ("expected usize", "expected a whole number >= 0"),
-        ("expected u64", "expected a whole number >= 0"),
-        ("expected u32", "expected a whole number >= 0"),
+        // TOML integers stop at 2^63 - 1, below usize's and u64's limits.
+        (
+            "expected usize",
+            "expected a whole number from 0 to 9223372036854775807",
+        ),
+        (
+            "expected u64",
+            "expected a whole number from 0 to 9223372036854775807",
+        ),
+        ("expected u32", "expected a whole number from 0 to 4294967295"),
         ("expected a sequence", "expected a list `[...]`"),
         ("expected a map", "expected a table"),
     ] {

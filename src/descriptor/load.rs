@@ -185,7 +185,12 @@ pub fn with_replicas(loaded: &Loaded, replicas: u32) -> Result<Loaded, Descripto
 /// Typed descriptor from a table (overrides applied). No source positions
 /// exist for overridden values, so errors carry the key path instead.
 pub fn from_table(file: &str, table: &toml::Table) -> Result<Descriptor, DescriptorError> {
-    Descriptor::deserialize(toml::Value::Table(table.clone())).map_err(|e| {
+    from_owned_table(file, table.clone())
+}
+
+/// `from_table` for a table the caller no longer needs (no copy is made).
+pub fn from_owned_table(file: &str, table: toml::Table) -> Result<Descriptor, DescriptorError> {
+    Descriptor::deserialize(toml::Value::Table(table)).map_err(|e| {
         let (message, hints) = explain(e.message());
         hints
             .into_iter()
@@ -197,6 +202,12 @@ pub fn from_table(file: &str, table: &toml::Table) -> Result<Descriptor, Descrip
 pub fn show(value: &toml::Value) -> String {
     match value {
         toml::Value::String(s) => format!("{s:?}"),
+        // `1e-300`, not three hundred digits (Rust's Debug form is valid TOML).
+        toml::Value::Float(f) if f.is_finite() => format!("{f:?}"),
+        toml::Value::Array(items) => {
+            let items: Vec<String> = items.iter().map(show).collect();
+            format!("[{}]", items.join(", "))
+        }
         other => other.to_string(),
     }
 }

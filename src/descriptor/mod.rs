@@ -8,6 +8,7 @@ pub mod explain;
 pub mod load;
 pub mod locate;
 pub mod overrides;
+pub mod point;
 pub mod sweep;
 pub mod validate;
 pub mod validate_integrator;

@@ -7,8 +7,9 @@ use crate::model::descriptor::{Scale, SweepMode, SweepSection, SweepValues};
 
 /// More runs than this need `--yes`.
 pub const CONFIRM_ABOVE: u64 = 100_000;
-/// More runs than this are refused outright: every planned run carries its
-/// own descriptor, so the plan alone would not fit in memory.
+/// More runs than this are refused outright: a study's records, tables and
+/// summaries grow with its runs (a plan of 2 million runs takes about half
+/// a gigabyte to plan and a second to validate).
 pub const HARD_LIMIT: u64 = 2_000_000;
 
 /// The values a sweep parameter takes, in order.
@@ -114,4 +115,57 @@ pub fn count(loaded: &Loaded) -> (u64, u64) {
         points.saturating_add(d.case.len() as u64),
         sweep_runs.saturating_add(case_runs),
     )
+}
+
+/// A value as a number compares: integers that a float holds exactly are
+/// written as that float, so `10` and `10.0` give one text; tables with
+/// sorted keys. Two values with the same text set a key alike.
+pub fn value_text(value: &toml::Value) -> String {
+    let mut out = String::new();
+    write_value(value, &mut out);
+    out
+}
+
+/// `value_text` of a sweep point's (key, value) pairs.
+pub fn point_text(params: &[(String, toml::Value)]) -> String {
+    let mut out = String::new();
+    for (key, value) in params {
+        out.push_str(key);
+        out.push('=');
+        write_value(value, &mut out);
+        out.push('\n');
+    }
+    out
+}
+
+fn write_value(value: &toml::Value, out: &mut String) {
+    use std::fmt::Write;
+    let _ = match value {
+        toml::Value::Integer(i) if i.unsigned_abs() <= 1 << 53 => write!(out, "{:?}", *i as f64),
+        toml::Value::Float(f) if *f == 0.0 => write!(out, "0.0"),
+        toml::Value::Float(f) => write!(out, "{f:?}"),
+        toml::Value::Integer(i) => write!(out, "{i}"),
+        toml::Value::String(s) => write!(out, "{s:?}"),
+        toml::Value::Boolean(b) => write!(out, "{b}"),
+        toml::Value::Datetime(d) => write!(out, "{d}"),
+        toml::Value::Array(items) => {
+            out.push('[');
+            for item in items {
+                write_value(item, out);
+                out.push(',');
+            }
+            write!(out, "]")
+        }
+        toml::Value::Table(t) => {
+            out.push('{');
+            let mut keys: Vec<&String> = t.keys().collect();
+            keys.sort();
+            for k in keys {
+                let _ = write!(out, "{k:?}=");
+                write_value(&t[k], out);
+                out.push(',');
+            }
+            write!(out, "}}")
+        }
+    };
 }

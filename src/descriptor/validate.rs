@@ -3,8 +3,11 @@
 
 use crate::model::descriptor::{Descriptor, Scale, SweepMode, SweepValues};
 use crate::model::scene::SceneSpec;
+use std::collections::HashSet;
 
-pub use crate::model::problem::{Check, Problem, bad, non_negative, positive};
+pub use crate::model::problem::{
+    Check, Problem, bad, compact, name_fits, non_negative, positive,
+};
 
 /// Top-level sections a sweep may set. `[study]` is not among them: replicas
 /// and seeds shape the plan itself, so they cannot vary within it.
@@ -21,12 +24,34 @@ pub fn descriptor(d: &Descriptor) -> Check {
 /// What one sweep point needs to run: `[run]`, the scene after its preset is
 /// resolved, `[observe]` and `[analysis.*]`.
 pub fn point(d: &Descriptor) -> Check {
-    run(d)?;
-    let scene = resolved(&d.scene)?;
-    crate::descriptor::validate_scene::scene(&scene)?;
-    crate::descriptor::validate_integrator::integrator(d, &scene)?;
-    crate::descriptor::validate_observe::observe(d, &scene)?;
-    crate::descriptor::validate_observe::analysis(d, &scene)
+    Points::default().point(d)
+}
+
+/// `point` for the many points of one plan: a scene just found sound is not
+/// checked again (the points of a sweep over `[run]` share theirs, and its
+/// explicit positions may be many).
+#[derive(Default)]
+pub struct Points {
+    sound: Option<SceneSpec>,
+}
+
+impl Points {
+    pub fn point(&mut self, d: &Descriptor) -> Check {
+        run(d)?;
+        let scene = resolved(&d.scene)?;
+        if self.sound.as_ref() != Some(&scene) {
+            crate::descriptor::validate_scene::scene(&scene)?;
+            self.sound = Some(scene.clone());
+        }
+        rest(d, &scene)
+    }
+}
+
+/// What `point` checks beside `[run]` and the scene.
+fn rest(d: &Descriptor, scene: &SceneSpec) -> Check {
+    crate::descriptor::validate_integrator::integrator(d, scene)?;
+    crate::descriptor::validate_observe::observe(d, scene)?;
+    crate::descriptor::validate_observe::analysis(d, scene)
 }
 
 /// The scene with its preset applied; an unknown preset is a problem at `scene.preset`.
@@ -62,6 +87,7 @@ pub fn study(d: &Descriptor) -> Check {
         && name
             .chars()
             .all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c));
+    name_fits("study.name", name)?;
     if !ok {
         return bad(
             "study.name",
@@ -96,8 +122,34 @@ pub fn run(d: &Descriptor) -> Check {
     if !(r.equilibrate.is_finite() && r.equilibrate >= 0.0) {
         return bad(
             "run.equilibrate",
-            format!("must be a number >= 0, got {}", r.equilibrate),
+            format!("must be a number >= 0, got {}", compact(r.equilibrate)),
             None,
+        );
+    }
+    let times = [("run.duration", r.duration), ("run.equilibrate", Some(r.equilibrate))];
+    if let Some((key, Some(t))) = times.into_iter().find(|(_, t)| t.is_some_and(|t| t > MAX_TIME)) {
+        return bad(
+            key,
+            format!(
+                "{} is longer than a run's clock can count: at most {} in all",
+                compact(t),
+                compact(MAX_TIME)
+            ),
+            Some(
+                "the clock is a 64-bit float: at 1e12 it resolves only 1e-4, about the time \
+                 between events, and a run that long makes some 1e12 collisions per particle",
+            ),
+        );
+    }
+    if r.duration.unwrap_or(0.0) + r.equilibrate > MAX_TIME {
+        return bad(
+            "run.equilibrate",
+            format!(
+                "with `duration` the run lasts {}, longer than a run's clock can count (at most {})",
+                compact(r.duration.unwrap_or(0.0) + r.equilibrate),
+                compact(MAX_TIME)
+            ),
+            Some("shorten `duration` or `equilibrate`"),
         );
     }
     if let Some(dt) = r.sample_every {
@@ -109,18 +161,23 @@ pub fn run(d: &Descriptor) -> Check {
             return bad(
                 "run.sample_every",
                 format!(
-                    "{dt} gives {:.1e} samples over the duration {t}; a run keeps at most {MAX_SAMPLES:.0e}",
-                    t / dt
+                    "{} gives {:.1e} samples over the duration {}; a run keeps at most {MAX_SAMPLES:.0e}",
+                    compact(dt),
+                    t / dt,
+                    compact(t)
                 ),
                 Some(&format!(
                     "sample less often, e.g. `sample_every = {}`",
-                    t / 1e5
+                    compact(t / 1e5)
                 )),
             );
         }
     }
     Ok(())
 }
+
+/// The longest simulated time a run may last (duration and equilibration).
+pub const MAX_TIME: f64 = 1e12;
 
 /// Samples one run may take: every one is kept in memory for the analyses.
 const MAX_SAMPLES: f64 = 1e7;
@@ -143,18 +200,8 @@ pub fn sweep(d: &Descriptor) -> Check {
                 return bad(at, "has no values", Some("give at least one value"));
             }
             SweepValues::List(v) => {
-                if sweep.mode == SweepMode::Product
-                    && let Some((i, x)) = v.iter().enumerate().find(|(i, x)| v[..*i].contains(x))
-                {
-                    return bad(
-                        at,
-                        format!(
-                            "value {} is listed twice (items {} and {i})",
-                            crate::descriptor::load::show(x),
-                            v.iter().position(|y| y == x).unwrap_or(0)
-                        ),
-                        Some("remove the repeat: both points would run with the same seeds"),
-                    );
+                if sweep.mode == SweepMode::Product {
+                    repeats(&at, v)?;
                 }
                 v.len()
             }
@@ -219,9 +266,31 @@ pub fn sweep(d: &Descriptor) -> Check {
     Ok(())
 }
 
-/// `[[case]]` number `i`: a name that can label its rows, used once, replicas
+/// A value listed twice, numbers compared as numbers (`10` and `10.0`).
+fn repeats(at: &str, values: &[toml::Value]) -> Check {
+    let mut first = std::collections::HashMap::with_capacity(values.len());
+    for (i, x) in values.iter().enumerate() {
+        if let Some(j) = first.insert(crate::descriptor::sweep::value_text(x), i) {
+            let show = crate::descriptor::load::show;
+            let (same, hint) = if values[j] == *x {
+                (String::new(), "the same seeds")
+            } else {
+                (format!(" (as {})", show(&values[j])), "the same settings")
+            };
+            return bad(
+                at,
+                format!("value {}{same} is listed twice (items {j} and {i})", show(x)),
+                Some(&format!("remove the repeat: both points would run with {hint}")),
+            );
+        }
+    }
+    Ok(())
+}
+
+/// `[[case]]` number `i` (`named`: the names of those before it): a name
+/// that can label its rows, used once, replicas
 /// if given at least 1, keys that a sweep could set.
-pub fn case(d: &Descriptor, i: usize) -> Check {
+pub fn case<'d>(d: &'d Descriptor, i: usize, named: &mut HashSet<&'d str>) -> Check {
     let case = &d.case[i];
     let at = format!("case.{i}");
     let ok = !case.name.is_empty()
@@ -236,7 +305,8 @@ pub fn case(d: &Descriptor, i: usize) -> Check {
             Some("use letters, digits, `-` or `_`, e.g. `name = \"mackay\"`"),
         );
     }
-    if d.case[..i].iter().any(|c| c.name == case.name) {
+    name_fits(&format!("{at}.name"), &case.name)?;
+    if !named.insert(&case.name) {
         return bad(
             format!("{at}.name"),
             format!("case \"{}\" is defined twice", case.name),

@@ -11,4 +11,5 @@ pub mod report;
 pub mod run_output;
 pub mod run_spec;
 pub mod scene;
+pub mod shared;
 pub mod summary;

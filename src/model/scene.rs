@@ -4,6 +4,7 @@
 //! validates them) and the scene builder (which turns them into an engine
 //! system). Every field has a default so a bundled preset can fill the rest.
 
+use crate::model::shared::Shared;
 use serde::{Deserialize, Serialize};
 
 /// The physical setup of one run.
@@ -162,8 +163,8 @@ pub enum Placement {
     /// radii; the target packing fraction is what the species and box imply.
     /// Reaches dense fluids, polycrystals and glasses up to packing fraction
     /// 0.88 (2D; above about 0.87 it may jam first) or 0.64 (3D), less in
-    /// small walled boxes; beyond, use "lattice". In 1D it is the exact random
-    /// placement.
+    /// small walled boxes; beyond, use "lattice". 2D/3D only: in 1D "random"
+    /// is exact at any density.
     Compress {
         /// How fast radii grow, as a fraction of their final size per unit time,
         /// with the particles kept at kT = 1 meanwhile (default 0.005). Slower
@@ -174,8 +175,8 @@ pub enum Placement {
         #[serde(default)]
         from: Option<CompressFrom>,
     },
-    /// Explicit positions, one list per particle.
-    Explicit { positions: Vec<Vec<f64>> },
+    /// Explicit positions, one list per particle (shared by the plan's points).
+    Explicit { positions: Shared<Vec<Vec<f64>>> },
 }
 
 /// Where a compression starts.
@@ -213,8 +214,9 @@ pub enum Velocities {
     },
     /// Every particle with the same velocity vector (MacKay's piston start).
     Equal { velocity: Vec<f64> },
-    /// Explicit velocities, one list per particle (piston not included).
-    Explicit { velocities: Vec<Vec<f64>> },
+    /// Explicit velocities, one list per particle (piston not included;
+    /// shared by the plan's points).
+    Explicit { velocities: Shared<Vec<Vec<f64>>> },
 }
 
 fn one_f() -> f64 {

@@ -31,7 +31,7 @@ pub fn points(runs: &[(RunSpec, RunOutput)]) -> Points {
             .entry(spec.point_id)
             .or_insert_with(|| match &spec.case {
                 Some(name) => vec![("case".into(), toml::Value::String(name.clone()))],
-                None => spec.params.clone(),
+                None => spec.params.to_vec(),
             });
     }
     points

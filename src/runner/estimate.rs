@@ -6,7 +6,8 @@
 use crate::descriptor::validate::resolved;
 use crate::descriptor::validate_scene::{count, dimension};
 use crate::model::descriptor::Descriptor;
-use crate::model::scene::{Mass, SceneSpec, Velocities};
+use crate::model::run_spec::RunSpec;
+use crate::model::scene::{Mass, PistonSpec, SceneSpec, Velocities};
 use std::f64::consts::PI;
 
 /// Nominal pair collisions per second on one thread in 1D, 2D and 3D: the
@@ -21,6 +22,10 @@ pub struct RunCost {
     /// Pair collisions, equilibration included.
     pub collisions: f64,
     pub dimension: usize,
+    /// Pair collisions per unit time (the piston's included).
+    pub rate: f64,
+    /// Of the collisions per unit time, those of the piston (0 without one).
+    pub piston_share: f64,
 }
 
 impl RunCost {
@@ -30,11 +35,13 @@ impl RunCost {
     }
 }
 
-/// Expected cost of one run; None when the scene does not resolve.
+/// Expected cost of one run; None when the scene does not resolve. The
+/// collisions may be infinite (speeds or times beyond any run).
 pub fn run_cost(d: &Descriptor) -> Option<RunCost> {
     let scene = resolved(&d.scene).ok()?;
-    let rate = collision_rate(&scene)?;
-    let timed = |t: f64| rate * t;
+    let Rates { gas, piston } = collision_rates(&scene)?;
+    let rate = gas + piston;
+    let timed = |t: f64| if t == 0.0 { 0.0 } else { rate * t };
     let measured = match (d.run.duration, d.run.collisions) {
         (Some(t), _) => timed(t),
         (None, Some(c)) => c as f64,
@@ -43,22 +50,57 @@ pub fn run_cost(d: &Descriptor) -> Option<RunCost> {
     Some(RunCost {
         collisions: measured + timed(d.run.equilibrate),
         dimension: dimension(&scene),
+        rate,
+        piston_share: if rate > 0.0 { piston / rate } else { 0.0 },
     })
 }
 
-/// Pair collisions per unit time in a scene at its initial temperature:
-/// N z / 2, with each particle's collision frequency z = rho <|v_rel|> in 1D
-/// (rho over the free length, Tonks), rho sigma <|v_rel|> g(sigma) for disks
-/// and rho pi sigma^2 <|v_rel|> g(sigma) for spheres, g at contact from
-/// Henderson (2D) and Carnahan-Starling (3D); <|v_rel|> for the mean mass.
+/// One estimate per sweep point or case (its replicas differ only in their
+/// seeds): the index of its first run, its cost per run, and its runs.
+pub fn by_point(specs: &[RunSpec]) -> Vec<(usize, Option<RunCost>, f64)> {
+    let mut costs: Vec<(usize, Option<RunCost>, f64)> = Vec::new();
+    for (i, spec) in specs.iter().enumerate() {
+        if i == 0 || specs[i - 1].point_id != spec.point_id {
+            costs.push((i, run_cost(&spec.descriptor), 0.0));
+        }
+        if let Some(last) = costs.last_mut() {
+            last.2 += 1.0;
+        }
+    }
+    costs
+}
+
+/// Pair collisions per unit time in a scene at its initial temperature
+/// (the piston's with the gas included); None without a box.
 pub fn collision_rate(scene: &SceneSpec) -> Option<f64> {
+    collision_rates(scene).map(|r| r.gas + r.piston)
+}
+
+/// Collisions per unit time: among the gas, and of the piston with the gas.
+struct Rates {
+    gas: f64,
+    piston: f64,
+}
+
+/// N z / 2 for the gas, with each particle's collision frequency z = rho
+/// <|v_rel|> in 1D (rho over the free length, Tonks), rho sigma <|v_rel|>
+/// g(sigma) for disks and rho pi sigma^2 <|v_rel|> g(sigma) for spheres, g
+/// at contact from Henderson (2D) and Carnahan-Starling (3D); <|v_rel|> for
+/// the mean mass. The piston meets the gas on both faces, each of area A
+/// (1 in 1D) at the contact density rho g, with the flux of a Maxwellian
+/// relative velocity along x: 2 rho g A sqrt(s^2 / (2 pi)), s^2 = kT/m +
+/// kT_p/M (kT_p = M <v_p^2>, its start).
+fn collision_rates(scene: &SceneSpec) -> Option<Rates> {
     let d = dimension(scene);
     let size = scene.box_size.as_ref()?;
     let volume: f64 = size.iter().product();
     let gas: usize = (0..scene.species.len()).map(|i| count(scene, i)).sum();
     let n = gas + usize::from(scene.piston.is_some());
     if n < 2 || volume <= 0.0 {
-        return Some(0.0);
+        return Some(Rates {
+            gas: 0.0,
+            piston: 0.0,
+        });
     }
     let weighted = |f: &dyn Fn(usize) -> f64| {
         (0..scene.species.len())
@@ -75,19 +117,48 @@ pub fn collision_rate(scene: &SceneSpec) -> Option<f64> {
     let kt = temperature(scene, mass, gas);
     let rho = n as f64 / volume;
     let phi = rho * ball_volume(d, sigma);
-    let z = match d {
-        1 => rho / (1.0 - phi).max(1e-3) * 2.0 * (kt / (PI * mass)).sqrt(),
-        2 => {
-            let g = (1.0 - 7.0 * phi / 16.0) / (1.0 - phi).max(1e-3).powi(2);
-            rho * sigma * (PI * kt / mass).sqrt() * g
-        }
-        _ => {
-            let g = (1.0 - phi / 2.0) / (1.0 - phi).max(1e-3).powi(3);
-            rho * PI * sigma * sigma * (16.0 * kt / (PI * mass)).sqrt() * g
-        }
+    // Contact density over rho.
+    let g = match d {
+        1 => 1.0 / (1.0 - phi).max(1e-3),
+        2 => (1.0 - 7.0 * phi / 16.0) / (1.0 - phi).max(1e-3).powi(2),
+        _ => (1.0 - phi / 2.0) / (1.0 - phi).max(1e-3).powi(3),
     };
-    let rate = 0.5 * n as f64 * z;
-    rate.is_finite().then_some(rate)
+    let z = match d {
+        1 => rho * g * 2.0 * (kt / (PI * mass)).sqrt(),
+        2 => rho * sigma * (PI * kt / mass).sqrt() * g,
+        _ => rho * PI * sigma * sigma * (16.0 * kt / (PI * mass)).sqrt() * g,
+    };
+    let gas_rate = 0.5 * gas as f64 * z;
+    let piston = match &scene.piston {
+        Some(p) if gas > 0 => {
+            let face: f64 = size.iter().skip(1).product();
+            let spread = kt / mass + piston_kt(scene, p, kt) / p.mass;
+            2.0 * rho * g * face * (spread / (2.0 * PI)).sqrt()
+        }
+        _ => 0.0,
+    };
+    // NaN: a mean mass that is not a number (immovable particles).
+    (!gas_rate.is_nan() && !piston.is_nan()).then_some(Rates {
+        gas: gas_rate,
+        piston,
+    })
+}
+
+/// M <v^2> of the piston at the start: from its `energy` or `velocity`, or
+/// as the gas's rule draws it with the piston's mass.
+fn piston_kt(scene: &SceneSpec, p: &PistonSpec, kt: f64) -> f64 {
+    match (p.energy, p.velocity, &scene.velocities) {
+        (Some(e), _, _) => 2.0 * e * kt,
+        (None, Some(v), _) => p.mass * v * v,
+        (None, None, Some(Velocities::Uniform { p: momentum, .. })) => {
+            momentum * momentum / (3.0 * p.mass)
+        }
+        (None, None, Some(Velocities::Equal { velocity })) => {
+            p.mass * velocity.first().map_or(0.0, |v| v * v)
+        }
+        (None, None, Some(Velocities::Explicit { .. })) => 0.0,
+        _ => kt,
+    }
 }
 
 /// Volume of a ball of diameter `sigma` in `d` dimensions.
@@ -124,5 +195,9 @@ fn temperature(scene: &SceneSpec, mass: f64, gas: usize) -> f64 {
         ),
         None => 1.0,
     };
-    if kt.is_finite() && kt > 0.0 { kt } else { 1.0 }
+    // Speeds too large to square give no finite kT: so many collisions.
+    match kt {
+        kt if kt.is_nan() || kt <= 0.0 => 1.0,
+        kt => kt,
+    }
 }

@@ -3,6 +3,7 @@
 
 pub mod checkpoint;
 pub mod collect;
+pub mod confirm;
 pub mod cpu_time;
 pub mod estimate;
 pub mod lock;

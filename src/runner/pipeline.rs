@@ -8,6 +8,7 @@ use crate::descriptor::sweep::{self, CONFIRM_ABOVE};
 use crate::files::write_atomic;
 use crate::model::run_spec::RunSpec;
 use crate::runner::checkpoint;
+pub use crate::runner::confirm::confirm_cost;
 use crate::runner::collect::{self, Collected, Invocation, RunCommand};
 use crate::runner::lock::OutLock;
 use crate::runner::origin::{self, Origin};
@@ -80,10 +81,17 @@ pub fn prepare(path: &Path, replicas: Option<u32>, quick: bool) -> Result<Loaded
 pub fn confirm_size(loaded: &Loaded, yes: bool) -> Result<(), DescriptorError> {
     let (points, runs) = sweep::count(loaded);
     if runs > CONFIRM_ABOVE && !yes {
+        let at = if loaded.descriptor.sweep.is_some() {
+            "sweep"
+        } else {
+            "study.replicas"
+        };
         return Err(DescriptorError::new(
             &loaded.file,
             format!("the plan has {runs} runs ({points} sweep points x {} replicas), more than {CONFIRM_ABOVE}", loaded.descriptor.study.replicas),
         )
+        .at(crate::descriptor::locate::position_of(&loaded.text, at))
+        .key(at)
         .hint("pass --yes if you mean it, or sweep fewer values / fewer replicas"));
     }
     Ok(())
@@ -132,6 +140,7 @@ fn plan_study(
     let loaded = prepare(path, replicas, quick)?;
     confirm_size(&loaded, yes)?;
     let specs = plan::plan(&loaded)?;
+    confirm_cost(&loaded, &specs, yes)?;
     let out_dir = out
         .cloned()
         .unwrap_or_else(|| default_out_dir(&loaded, quick));
@@ -168,20 +177,43 @@ impl Planned {
 
 /// Create and lock the output folder, and remove what a killed invocation left.
 fn claim(out_dir: &Path) -> Result<OutLock, StudyError> {
-    std::fs::create_dir_all(out_dir)
-        .with_context(|| format!("cannot create the output directory {}", out_dir.display()))?;
-    let lock = OutLock::acquire(out_dir)?;
+    let made = create_out_dir(out_dir)?;
+    let lock = OutLock::acquire(out_dir).inspect_err(|_| unmake(&made))?;
     publish::remove_leftovers(out_dir)?;
     Ok(lock)
+}
+
+/// Create `out_dir` and any folders above it that are missing; returns
+/// those it created, deepest first. If it fails, what it created is
+/// removed again: a study that cannot start leaves no empty `reports/`.
+fn create_out_dir(out_dir: &Path) -> Result<Vec<PathBuf>, StudyError> {
+    let made: Vec<PathBuf> = out_dir
+        .ancestors()
+        .filter(|a| !a.as_os_str().is_empty())
+        .take_while(|a| std::fs::symlink_metadata(a).is_err())
+        .map(Path::to_path_buf)
+        .collect();
+    std::fs::create_dir_all(out_dir)
+        .inspect_err(|_| unmake(&made))
+        .with_context(|| format!("cannot create the output directory {}", out_dir.display()))?;
+    Ok(made)
+}
+
+/// Remove the folders `create_out_dir` made (deepest first), while empty.
+fn unmake(made: &[PathBuf]) {
+    for dir in made {
+        if std::fs::remove_dir(dir).is_err() {
+            break;
+        }
+    }
 }
 
 /// Create the output folder and lock it shared with other parts of the
 /// plan (`shard`: and that shard's own lock). Nothing is removed: the
 /// leftovers may be another part's work in flight.
 fn claim_shared(out_dir: &Path, shard: Option<Shard>) -> Result<OutLock, StudyError> {
-    std::fs::create_dir_all(out_dir)
-        .with_context(|| format!("cannot create the output directory {}", out_dir.display()))?;
-    Ok(OutLock::shared(out_dir, shard.map(|s| s.tag()).as_deref())?)
+    let made = create_out_dir(out_dir)?;
+    Ok(OutLock::shared(out_dir, shard.map(|s| s.tag()).as_deref()).inspect_err(|_| unmake(&made))?)
 }
 
 /// The `study run` command that runs (or resumes) the plan these flags make,

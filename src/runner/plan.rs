@@ -1,15 +1,19 @@
 //! Sweep x replicas -> one `RunSpec` per simulation, each with the descriptor
 //! as it applies to its sweep point and its own seed, derived from (study
-//! seed, the point's swept values, replica).
+//! seed, the point's swept values, replica). A point's replicas share its
+//! descriptor, and points share the base's long lists (`descriptor::point`),
+//! so planning is linear in the plan's size.
 
 use crate::descriptor::errors::DescriptorError;
-use crate::descriptor::load::{Loaded, apply_overrides, from_table, show};
-use crate::descriptor::sweep::{HARD_LIMIT, count, points};
+use crate::descriptor::load::{Loaded, show};
+use crate::descriptor::point::{PointBase, PointError};
+use crate::descriptor::sweep::{HARD_LIMIT, count, points, point_text};
 use crate::descriptor::validate;
 use crate::model::descriptor::Descriptor;
 use crate::model::run_spec::RunSpec;
 use crate::runner::seeds::{point_key, run_seed};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
+use std::sync::Arc;
 
 /// Expand the descriptor into runs: the sweep's (run_id = point_id *
 /// replicas + replica), then each case's, numbered on. Every point is
@@ -35,8 +39,11 @@ pub fn plan(loaded: &Loaded) -> Result<Vec<RunSpec>, DescriptorError> {
     }
     let d = &loaded.descriptor;
     let replicas = d.study.replicas;
-    let mut specs = Vec::new();
+    let mut specs = Vec::with_capacity(usize::try_from(runs).unwrap_or(0));
     let mut seen: HashMap<u64, u64> = HashMap::new();
+    let mut same: HashMap<String, u64> = HashMap::new();
+    let base = PointBase::new(&loaded.file, &loaded.table, d);
+    let mut checks = validate::Points::default();
     for (point_id, params) in points(d.sweep.as_ref()).into_iter().enumerate() {
         let point_id = point_id as u64;
         let fail = |message: String, hint: Option<String>| {
@@ -51,23 +58,29 @@ pub fn plan(loaded: &Loaded) -> Result<Vec<RunSpec>, DescriptorError> {
             .key("sweep.parameters");
             hint.into_iter().fold(err, DescriptorError::hint)
         };
-        let descriptor = point_descriptor(loaded, &loaded.table, &params, &fail)?;
+        let descriptor = Arc::new(point_descriptor(&base, &mut checks, &params, &fail)?);
         let key = point_key(&params);
-        if let Some(other) = seen.insert(key, point_id) {
+        // 10 and 10.0 are one value: the same point, though not the same seeds.
+        let repeat = match seen.insert(key, point_id) {
+            Some(other) => Some((other, "seeds")),
+            None => same.insert(point_text(&params), point_id).map(|o| (o, "settings")),
+        };
+        if let Some((other, what)) = repeat {
             return Err(fail(
                 format!("has the same values as point {other}"),
-                Some("remove the repeat: both points would run with the same seeds".into()),
+                Some(format!("remove the repeat: both points would run with the same {what}")),
             ));
         }
+        let params = Arc::new(params);
         for replica in 0..replicas {
             specs.push(RunSpec {
                 run_id: point_id * u64::from(replicas) + u64::from(replica),
                 point_id,
                 replica,
                 seed: run_seed(d.study.seed, key, replica),
-                params: params.clone(),
+                params: Arc::clone(&params),
                 case: None,
-                descriptor: descriptor.clone(),
+                descriptor: Arc::clone(&descriptor),
             });
         }
     }
@@ -81,9 +94,10 @@ pub fn plan(loaded: &Loaded) -> Result<Vec<RunSpec>, DescriptorError> {
 /// or with each other.
 fn cases(loaded: &Loaded, specs: &mut Vec<RunSpec>) -> Result<(), DescriptorError> {
     let d = &loaded.descriptor;
-    let mut base = loaded.table.clone();
-    base.remove("sweep");
-    base.remove("case");
+    let base = PointBase::new(&loaded.file, &loaded.table, d);
+    let mut checks = validate::Points::default();
+    let no_params = Arc::new(Vec::new());
+    let mut named = HashSet::new();
     for (i, case) in d.case.iter().enumerate() {
         let at = format!("case.{i}");
         let fail = |message: String, hint: Option<String>| {
@@ -93,13 +107,13 @@ fn cases(loaded: &Loaded, specs: &mut Vec<RunSpec>) -> Result<(), DescriptorErro
                     .key(&at);
             hint.into_iter().fold(err, DescriptorError::hint)
         };
-        validate::case(d, i).map_err(|p| fail(format!("`{}`: {}", p.key, p.message), p.hint))?;
+        validate::case(d, i, &mut named).map_err(|p| fail(format!("`{}`: {}", p.key, p.message), p.hint))?;
         let settings: Vec<(String, toml::Value)> = case
             .set
             .iter()
             .map(|(k, v)| (k.clone(), v.clone()))
             .collect();
-        let descriptor = point_descriptor(loaded, &base, &settings, &fail)?;
+        let descriptor = Arc::new(point_descriptor(&base, &mut checks, &settings, &fail)?);
         let point_id = specs.last().map_or(0, |s| s.point_id + 1);
         let key = point_key(&[("case".to_string(), toml::Value::String(case.name.clone()))]);
         for replica in 0..case.replicas.unwrap_or(d.study.replicas) {
@@ -108,35 +122,34 @@ fn cases(loaded: &Loaded, specs: &mut Vec<RunSpec>) -> Result<(), DescriptorErro
                 point_id,
                 replica,
                 seed: run_seed(d.study.seed, key, replica),
-                params: Vec::new(),
+                params: Arc::clone(&no_params),
                 case: Some(case.name.clone()),
-                descriptor: descriptor.clone(),
+                descriptor: Arc::clone(&descriptor),
             });
         }
     }
     Ok(())
 }
 
-/// The descriptor of one point: `base` with `settings` (key path, value)
+/// The descriptor of one point: the base with `settings` (key path, value)
 /// applied, typed and checked as it will run; problems go through `fail`,
 /// which says which point they belong to.
 fn point_descriptor(
-    loaded: &Loaded,
-    base: &toml::Table,
+    base: &PointBase<'_>,
+    checks: &mut validate::Points,
     settings: &[(String, toml::Value)],
     fail: &dyn Fn(String, Option<String>) -> DescriptorError,
 ) -> Result<Descriptor, DescriptorError> {
-    let mut table = base.clone();
-    for (key, value) in settings {
-        apply_overrides(&mut table, key, value.clone())
-            .map_err(|m| fail(format!("`{key}`: {m}"), None))?;
-    }
-    let descriptor = from_table(&loaded.file, &table).map_err(|e| {
-        let mut err = fail(e.message, None);
-        err.hints = e.hints;
-        err
+    let descriptor = base.descriptor(settings).map_err(|e| match e {
+        PointError::Apply(n, m) => fail(format!("`{}`: {m}", settings[n].0), None),
+        PointError::Typed(e) => {
+            let mut err = fail(e.message, None);
+            err.hints = e.hints;
+            err
+        }
     })?;
-    validate::point(&descriptor)
+    checks
+        .point(&descriptor)
         .map_err(|p| fail(format!("`{}`: {}", p.key, p.message), p.hint))?;
     Ok(descriptor)
 }

@@ -107,7 +107,7 @@ impl RunnerReport {
 /// and `[quick]`, already applied). So raising `--replicas` or inserting a sweep value
 /// reuses the runs already done.
 pub fn fingerprint(spec: &RunSpec) -> String {
-    let mut run = serde_json::to_value(&spec.descriptor).unwrap_or_default();
+    let mut run = serde_json::to_value(&*spec.descriptor).unwrap_or_default();
     if let Some(sections) = run.as_object_mut() {
         for section in ["study", "sweep", "case", "quick"] {
             sections.remove(section);

@@ -214,9 +214,14 @@ pub fn list() -> &'static [Preset] {
 
 /// The preset's scene, or None for an unknown name.
 pub fn find(name: &str) -> Option<SceneSpec> {
-    let preset = PRESETS.iter().find(|p| p.name == name)?;
-    // Bundled presets are tested to parse (see the tests below).
-    toml::from_str(preset.toml).ok()
+    // Parsed once: a plan resolves its scene for every sweep point.
+    static PARSED: std::sync::OnceLock<Vec<Option<SceneSpec>>> = std::sync::OnceLock::new();
+    let parsed = PARSED.get_or_init(|| {
+        // Bundled presets are tested to parse (see the tests below).
+        PRESETS.iter().map(|p| toml::from_str(p.toml).ok()).collect()
+    });
+    let i = PRESETS.iter().position(|p| p.name == name)?;
+    parsed[i].clone()
 }
 
 /// Names, for "did you mean" and error messages.

@@ -18,9 +18,9 @@ fn run(point: u64, replica: u32, mass: f64, scalars: &[(&str, f64)]) -> (RunSpec
         point_id: point,
         replica,
         seed: 7 + point * 100 + u64::from(replica),
-        params: vec![("scene.piston.mass".into(), toml::Value::Float(mass))],
+        params: vec![("scene.piston.mass".into(), toml::Value::Float(mass))].into(),
         case: None,
-        descriptor: descriptor(),
+        descriptor: descriptor().into(),
     };
     let out = RunOutput {
         scalars: scalars.iter().map(|(n, v)| (n.to_string(), *v)).collect(),

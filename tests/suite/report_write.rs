@@ -59,9 +59,10 @@ fn swept_runs() -> Vec<(RunSpec, RunOutput)> {
                     params: vec![
                         ("scene.piston.mass".into(), toml::Value::Float(mass)),
                         ("scene.species.0.count".into(), toml::Value::Integer(count)),
-                    ],
+                    ]
+                    .into(),
                     case: None,
-                    descriptor: base.clone(),
+                    descriptor: base.clone().into(),
                 };
                 let out = RunOutput {
                     scalars: vec![
@@ -329,9 +330,9 @@ fn degenerate_data_gives_placeholders_not_panics() {
         point_id: 0,
         replica,
         seed: 5,
-        params: vec![],
+        params: vec![].into(),
         case: None,
-        descriptor: d.clone(),
+        descriptor: d.clone().into(),
     };
     let empty_series = Series {
         observable: "empty".into(),

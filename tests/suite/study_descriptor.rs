@@ -79,7 +79,7 @@ fn unknown_variant_and_wrong_type() {
         &[
             "s.toml:15:9:",
             "`scene.species.0.count`",
-            "expected a whole number >= 0",
+            "expected a whole number from 0 to 9223372036854775807",
         ],
     );
     let msg = error(&PISTON.replace("boundary = [\"walls\"]", "boundary = [\"wall\"]"));

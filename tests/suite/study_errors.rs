@@ -71,7 +71,7 @@ fn run_section() {
             "more samples than a run keeps",
             edit("sample_every = 0.5", "sample_every = 1e-6"),
             &[
-                "s.toml:36:1: `run.sample_every`: 0.000001 gives 1.0e8 samples over the duration 100; a run keeps at most 1e7",
+                "s.toml:36:1: `run.sample_every`: 1e-6 gives 1.0e8 samples over the duration 100; a run keeps at most 1e7",
                 "`sample_every = 0.001`",
             ],
         ),

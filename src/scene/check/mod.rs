@@ -179,6 +179,11 @@ fn placement(s: &SceneSpec) -> Check {
                 Some(&format!("instead of `{kind}`, use {}", names.join(" or "))),
             )
         }
+        Some(Placement::Compress { .. }) if d == 1 => bad(
+            "scene.placement.kind",
+            "\"compress\" grows disks or spheres (2D/3D); rods on a line need no compression",
+            Some("use `kind = \"random\"`: in 1D it places rods exactly at random at any density"),
+        ),
         Some(Placement::Compress { growth_rate, .. }) => {
             if let Some(rate) = growth_rate {
                 positive("scene.placement.growth_rate", *rate).map_err(|mut p| {
@@ -189,13 +194,11 @@ fn placement(s: &SceneSpec) -> Check {
                     p
                 })?;
             }
-            // On a line compression is the exact random placement, which
-            // moves nothing.
             let immovable = s.species.iter().enumerate().find(|(i, sp)| {
                 sp.mass == crate::model::scene::Drawn::Fixed(f64::INFINITY) && count(s, *i) > 0
             });
             match immovable {
-                Some((i, sp)) if d > 1 => bad(
+                Some((i, sp)) => bad(
                     format!("scene.species.{i}.mass"),
                     format!(
                         "species {:?} is immovable (infinite mass), but compression moves every particle",

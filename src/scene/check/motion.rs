@@ -2,10 +2,21 @@
 //! set as asked.
 
 use super::{count, dimension, particles, vector, vectors};
-use crate::model::problem::{Check, bad, positive};
+use crate::model::problem::{Check, bad, compact, positive};
 use crate::model::scene::{Boundary, Drawn, SceneSpec, Velocities};
 
+/// The largest kinetic energy a scene may start with, in units of kT = 1.
+/// Observers square energies (fluctuations, autocorrelations), and squares
+/// of more than about 1e154 are infinite; time units make any larger
+/// scale needless (kT = 1e10 is kT = 1 seen 1e5 times faster).
+pub const MAX_ENERGY: f64 = 1e150;
+
 pub fn velocities(s: &SceneSpec) -> Check {
+    drawn(s)?;
+    energy_fits(s)
+}
+
+fn drawn(s: &SceneSpec) -> Check {
     let energy = |e: &Option<f64>| match e {
         Some(e) => positive("scene.velocities.energy", *e),
         None => Ok(()),
@@ -126,5 +137,70 @@ fn balances_piston(s: &SceneSpec, e: f64, movable: usize) -> Check {
              energy of {bulk}"
         ),
         Some("ask for more energy, or drop `zero_momentum`"),
+    )
+}
+
+/// The gas's kinetic energy at the start, as its velocities ask, must be
+/// finite and at most `MAX_ENERGY`. A mass drawn from a range counts at its
+/// largest; immovable particles carry none.
+fn energy_fits(s: &SceneSpec) -> Check {
+    let d = dimension(s) as f64;
+    let n = particles(s) as f64;
+    let heaviest = |i: usize| match s.species[i].mass.bounds()[1] {
+        m if m.is_finite() => m,
+        _ => 0.0,
+    };
+    let lightest = (0..s.species.len())
+        .map(|i| s.species[i].mass.bounds()[0])
+        .fold(f64::INFINITY, f64::min);
+    let per_species = |f: &dyn Fn(usize) -> f64| -> f64 {
+        (0..s.species.len())
+            .map(|i| count(s, i) as f64 * f(i))
+            .sum()
+    };
+    let (key, e) = match &s.velocities {
+        Some(Velocities::Maxwell {
+            energy: Some(e), ..
+        })
+        | Some(Velocities::Uniform {
+            energy: Some(e), ..
+        }) => ("scene.velocities.energy", *e),
+        Some(Velocities::Maxwell { temperature, .. }) => {
+            ("scene.velocities.temperature", 0.5 * d * n * temperature)
+        }
+        // Each component's momentum up to p: energy up to d p^2 / (2 m).
+        Some(Velocities::Uniform { p, .. }) => (
+            "scene.velocities.p",
+            0.5 * d * n * (p * p) / lightest,
+        ),
+        Some(Velocities::Equal { velocity }) => {
+            let v2: f64 = velocity.iter().map(|v| v * v).sum();
+            ("scene.velocities.velocity", 0.5 * v2 * per_species(&heaviest))
+        }
+        Some(Velocities::Explicit { velocities }) => {
+            let masses = (0..s.species.len()).flat_map(|i| std::iter::repeat_n(heaviest(i), count(s, i)));
+            let e = velocities
+                .iter()
+                .zip(masses)
+                .map(|(v, m)| 0.5 * m * v.iter().map(|x| x * x).sum::<f64>())
+                .sum();
+            ("scene.velocities.velocities", e)
+        }
+        None => ("scene.velocities", 0.5 * d * n),
+    };
+    if e <= MAX_ENERGY {
+        return Ok(());
+    }
+    bad(
+        key,
+        format!(
+            "gives the gas a kinetic energy of {}, more than the {} a run can carry",
+            compact(e),
+            compact(MAX_ENERGY)
+        ),
+        Some(
+            "work in reduced units (kT about 1, speeds about 1): a larger temperature only makes \
+             time run faster",
+        ),
     )
 }

@@ -1,9 +1,10 @@
 //! The piston: where it may slide, its mass, size, place and start.
 //! (Whether the gases keep clear of it is a matter of room: `layout`.)
 
+use super::motion::MAX_ENERGY;
 use super::{dimension, mass};
-use crate::model::problem::{Check, bad, non_negative};
-use crate::model::scene::{Boundary, Placement, SceneSpec};
+use crate::model::problem::{Check, bad, compact, non_negative};
+use crate::model::scene::{Boundary, Placement, SceneSpec, Velocities};
 
 pub fn piston(s: &SceneSpec) -> Check {
     let Some(p) = &s.piston else { return Ok(()) };
@@ -52,12 +53,47 @@ pub fn piston(s: &SceneSpec) -> Check {
     {
         return bad(
             "scene.piston.velocity",
-            format!("must be a finite number, got {v}"),
+            format!("must be a finite number, got {}", compact(v)),
             None,
         );
     }
     if let Some(e) = p.energy {
         non_negative("scene.piston.energy", e)?;
+        // In units of the scene's kT (the gas's temperature where it is given).
+        let kt = match &s.velocities {
+            Some(Velocities::Maxwell {
+                temperature,
+                energy: None,
+                ..
+            }) => *temperature,
+            _ => 1.0,
+        };
+        if e * kt > MAX_ENERGY {
+            return bad(
+                "scene.piston.energy",
+                format!(
+                    "{} kT is a kinetic energy of {}, more than the {} a run can carry",
+                    compact(e),
+                    compact(e * kt),
+                    compact(MAX_ENERGY)
+                ),
+                Some("the piston's energy is a multiple of the scene's kT, e.g. `energy = 10.0`"),
+            );
+        }
+    }
+    if let Some(v) = p.velocity
+        && 0.5 * p.mass * v * v > MAX_ENERGY
+    {
+        return bad(
+            "scene.piston.velocity",
+            format!(
+                "gives the piston (mass {}) a kinetic energy of {}, more than the {} a run can carry",
+                compact(p.mass),
+                compact(0.5 * p.mass * v * v),
+                compact(MAX_ENERGY)
+            ),
+            Some("work in reduced units: speeds about sqrt(kT / mass)"),
+        );
     }
     Ok(())
 }

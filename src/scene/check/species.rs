@@ -1,7 +1,7 @@
 //! The species: names, counts, masses, radii and regions.
 
 use super::{MAX_PARTICLES, axes, count, mass, particles};
-use crate::model::problem::{Check, bad, non_negative};
+use crate::model::problem::{Check, bad, name_fits, non_negative};
 use crate::model::scene::{Drawn, SceneSpec};
 use crate::scene::build::PISTON;
 
@@ -28,6 +28,7 @@ pub fn species(s: &SceneSpec) -> Check {
             Some("it sets the particle count of every species"),
         );
     }
+    let mut names = std::collections::HashSet::new();
     for (i, sp) in s.species.iter().enumerate() {
         let key = |k: &str| format!("scene.species.{i}.{k}");
         let name = &sp.name;
@@ -45,7 +46,8 @@ pub fn species(s: &SceneSpec) -> Check {
                 Some("rename the species"),
             );
         }
-        if s.species[..i].iter().any(|o| &o.name == name) {
+        name_fits(&key("name"), name)?;
+        if !names.insert(name.as_str()) {
             return bad(
                 key("name"),
                 format!("species {name:?} is named twice"),
