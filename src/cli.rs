@@ -84,6 +84,10 @@ struct RunArgs {
     /// Discard runs saved by an earlier, interrupted invocation instead of resuming.
     #[arg(long)]
     fresh: bool,
+    /// Write into --out even if it is a non-empty folder that is not a
+    /// study's output (bonkers still touches only names it makes itself).
+    #[arg(long)]
+    force: bool,
     /// No progress output.
     #[arg(long)]
     quiet: bool,
@@ -155,6 +159,10 @@ struct SlurmArgs {
     /// Also submit both jobs with sbatch.
     #[arg(long)]
     submit: bool,
+    /// Write into --out even if it is a non-empty folder that is not a
+    /// study's output (bonkers still touches only names it makes itself).
+    #[arg(long)]
+    force: bool,
 }
 
 #[derive(Debug, Args)]
@@ -232,6 +240,7 @@ fn run(
             .map(|s| s.to_string_lossy().into_owned())
             .collect(),
         checkpoint_every: Some(std::time::Duration::from_secs_f64(a.checkpoint_every)),
+        force: a.force,
     };
     let slice = match (a.shard, a.runs) {
         (Some(shard), _) => Some(Slice::Shard(shard)),
@@ -403,6 +412,7 @@ fn slurm_job(a: &SlurmArgs) -> Result<i32, StudyError> {
                 .into(),
         );
     }
+    crate::runner::outdir::check(&out, a.force)?;
     let study = std::env::current_exe()
         .map_err(|e| StudyError::Other(anyhow::anyhow!("cannot find the study executable: {e}")))?;
     let job = SlurmJob {

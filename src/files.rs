@@ -25,7 +25,7 @@ pub fn write_via_temp(
     write: impl FnOnce(&mut File) -> anyhow::Result<()>,
 ) -> anyhow::Result<()> {
     let tmp = temp_name(path);
-    let result = File::create(&tmp)
+    let result = create_new(&tmp)
         .map_err(anyhow::Error::from)
         .and_then(|mut file| write(&mut file))
         .with_context(|| format!("cannot write {}", tmp.display()))
@@ -37,6 +37,20 @@ pub fn write_via_temp(
         let _ = std::fs::remove_file(&tmp);
     }
     result
+}
+
+/// A new file at `tmp`. Never an existing one: a link planted there is not
+/// followed (`create_new` opens with O_EXCL). A file of that name can only
+/// be the leftover of a killed process that had our id, so it goes.
+fn create_new(tmp: &Path) -> std::io::Result<File> {
+    let open = || File::options().write(true).create_new(true).open(tmp);
+    match open() {
+        Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
+            std::fs::remove_file(tmp)?;
+            open()
+        }
+        other => other,
+    }
 }
 
 /// Make renames and removals in `dir` durable (Unix; elsewhere a rename is
@@ -69,7 +83,14 @@ fn temp_name(path: &Path) -> PathBuf {
 
 const TEMP_SUFFIX: &str = ".tmp";
 
-/// A temporary file of `write_atomic` (this version's or an earlier one's).
+/// A temporary file of `write_atomic`, by its exact form
+/// `.<name>.<digits>-<digits>.tmp`: a user's `notes.tmp` is not one.
 pub fn is_temporary(file_name: &str) -> bool {
-    file_name.ends_with(TEMP_SUFFIX)
+    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    file_name
+        .strip_prefix('.')
+        .and_then(|r| r.strip_suffix(TEMP_SUFFIX))
+        .and_then(|r| r.rsplit_once('.'))
+        .and_then(|(name, tag)| Some((name, tag.split_once('-')?)))
+        .is_some_and(|(name, (pid, n))| !name.is_empty() && digits(pid) && digits(n))
 }

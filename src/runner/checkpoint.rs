@@ -206,9 +206,11 @@ impl<'a> Reader<'a> {
     }
 }
 
-/// The checkpoint at `place`, if there is one this run can continue.
+/// The checkpoint at `place`, if there is one this run can continue: a
+/// regular file (a link is not followed, a device or pipe not read).
 pub fn read(place: &Place) -> Option<Saved> {
-    let data = std::fs::read(&place.path).ok()?;
+    let limit = crate::runner::outdir::CHECKPOINT_LIMIT;
+    let data = crate::runner::outdir::read_own(&place.path, limit).ok()?;
     Saved::decode(&data, &place.fingerprint).ok()
 }
 

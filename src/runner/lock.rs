@@ -11,7 +11,8 @@
 //! file races with a process about to lock it. flock-style locks also work
 //! on NFS and Lustre (Linux emulates them with POSIX locks there).
 
-use anyhow::{Context, bail};
+use crate::runner::outdir::open_own;
+use anyhow::{Context, anyhow, bail};
 use std::fs::{File, OpenOptions, TryLockError};
 use std::io::{Read, Seek, Write};
 use std::path::{Path, PathBuf};
@@ -91,7 +92,7 @@ pub fn shard_lock(out_dir: &Path, shard: &str) -> PathBuf {
 /// The process holding a shard's lock, if one does: its id, or "" if the
 /// file does not name it. None when nobody holds it (or it cannot be read).
 pub fn holder(path: &Path) -> Option<String> {
-    let mut file = File::open(path).ok()?;
+    let mut file = open_own(path, OpenOptions::new().read(true)).ok()?;
     match file.try_lock_shared() {
         Err(TryLockError::WouldBlock) => {
             let mut pid = String::new();
@@ -102,14 +103,13 @@ pub fn holder(path: &Path) -> Option<String> {
     }
 }
 
+/// The lock file at `path`, created if need be; a link there is not
+/// followed (the lock would write its process id where it points), nor is
+/// anything but a regular file used (`outdir::check` refuses both first).
 fn open(path: &Path) -> anyhow::Result<File> {
-    OpenOptions::new()
-        .read(true)
-        .write(true)
-        .create(true)
-        .truncate(false)
-        .open(path)
-        .with_context(|| format!("cannot open the lock file {}", path.display()))
+    let mut options = OpenOptions::new();
+    options.read(true).write(true).create(true).truncate(false);
+    open_own(path, &options).map_err(|e| anyhow!("cannot use the lock file: {e}"))
 }
 
 /// " (process 123)" as the lock file says, or "".

@@ -10,6 +10,7 @@ pub mod lock;
 pub mod manifest;
 pub mod movie;
 pub mod origin;
+pub mod outdir;
 pub mod pipeline;
 pub mod plan;
 pub mod progress;

@@ -6,7 +6,8 @@
 
 use crate::descriptor::errors::{DescriptorError, StudyError};
 use crate::descriptor::load::{self, Loaded};
-use anyhow::Context;
+use crate::runner::outdir;
+use anyhow::{Context, anyhow};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
@@ -66,15 +67,14 @@ pub fn save(out_dir: &Path, origin: &Origin) -> anyhow::Result<()> {
 
 fn read(out_dir: &Path) -> anyhow::Result<Origin> {
     let path = out_dir.join(ORIGIN_FILE);
-    let text = std::fs::read_to_string(&path)
-        .with_context(|| format!("cannot read {}", path.display()))?;
+    let text = outdir::read_own_text(&path, outdir::SMALL_LIMIT).map_err(|e| anyhow!("{e}"))?;
     serde_json::from_str(&text).with_context(|| format!("{} does not parse", path.display()))
 }
 
 /// The origin saved in `out_dir`; a folder without one is bad input.
 pub fn load(out_dir: &Path) -> Result<Origin, StudyError> {
     let path = out_dir.join(ORIGIN_FILE);
-    if !path.is_file() {
+    if std::fs::symlink_metadata(&path).is_err() {
         let what = if out_dir.is_dir() {
             "is not the output folder of a study: it has no .study.json"
         } else {

@@ -8,13 +8,13 @@ use crate::descriptor::sweep::{self, CONFIRM_ABOVE};
 use crate::files::write_atomic;
 use crate::model::run_spec::RunSpec;
 use crate::runner::checkpoint;
-pub use crate::runner::confirm::confirm_cost;
 use crate::runner::collect::{self, Collected, Invocation, RunCommand};
+pub use crate::runner::confirm::confirm_cost;
 use crate::runner::lock::OutLock;
 use crate::runner::origin::{self, Origin};
+use crate::runner::outdir;
 use crate::runner::plan;
 use crate::runner::progress::ProgressMode;
-use crate::runner::publish;
 use crate::runner::run::{self, RunnerOptions, RunnerReport, SimulateFn, Subset, run_subset};
 use crate::runner::shard::{self, Shard};
 use anyhow::Context;
@@ -39,6 +39,9 @@ pub struct StudyOptions {
     /// Wall time between checkpoints of a run (`checkpoint.rs`); None: the
     /// default, five minutes; zero: no checkpoints.
     pub checkpoint_every: Option<Duration>,
+    /// Write into a non-empty folder that is not a study's output
+    /// (`outdir::check`).
+    pub force: bool,
 }
 
 /// Options of `study collect`: those that find the plan and its folder.
@@ -175,11 +178,13 @@ impl Planned {
     }
 }
 
-/// Create and lock the output folder, and remove what a killed invocation left.
-fn claim(out_dir: &Path) -> Result<OutLock, StudyError> {
+/// Check, create and lock the output folder, and remove what a killed
+/// invocation left.
+fn claim(out_dir: &Path, force: bool) -> Result<OutLock, StudyError> {
+    outdir::check(out_dir, force)?;
     let made = create_out_dir(out_dir)?;
     let lock = OutLock::acquire(out_dir).inspect_err(|_| unmake(&made))?;
-    publish::remove_leftovers(out_dir)?;
+    outdir::remove_leftovers(out_dir)?;
     Ok(lock)
 }
 
@@ -211,9 +216,11 @@ fn unmake(made: &[PathBuf]) {
 /// Create the output folder and lock it shared with other parts of the
 /// plan (`shard`: and that shard's own lock). Nothing is removed: the
 /// leftovers may be another part's work in flight.
-fn claim_shared(out_dir: &Path, shard: Option<Shard>) -> Result<OutLock, StudyError> {
+fn claim_shared(out_dir: &Path, shard: Option<Shard>, force: bool) -> Result<OutLock, StudyError> {
+    outdir::check(out_dir, force)?;
     let made = create_out_dir(out_dir)?;
-    Ok(OutLock::shared(out_dir, shard.map(|s| s.tag()).as_deref()).inspect_err(|_| unmake(&made))?)
+    Ok(OutLock::shared(out_dir, shard.map(|s| s.tag()).as_deref())
+        .inspect_err(|_| unmake(&made))?)
 }
 
 /// The `study run` command that runs (or resumes) the plan these flags make,
@@ -323,7 +330,7 @@ pub fn run_study(
     let started = SystemTime::now();
     let clock = Instant::now();
     let planned = plan_run(path, options)?;
-    let _lock = claim(&planned.out_dir)?;
+    let _lock = claim(&planned.out_dir, options.force)?;
     let (report, runs_wall_seconds) =
         compute(&planned, Subset::All, options, Claim::Whole, simulate, stop)?;
     let invocation = Invocation {
@@ -363,7 +370,7 @@ pub fn run_part(
     stop: &AtomicBool,
 ) -> Result<RunnerReport, StudyError> {
     let planned = plan_run(path, options)?;
-    let _lock = claim(&planned.out_dir)?;
+    let _lock = claim(&planned.out_dir, options.force)?;
     let claim = Claim::Whole;
     Ok(compute(&planned, subset, options, claim, simulate, stop)?.0)
 }
@@ -392,7 +399,7 @@ pub fn run_slice(
         Slice::Shard(s) => Some(*s),
         Slice::Runs(_) => None,
     };
-    let _lock = claim_shared(&planned.out_dir, shard)?;
+    let _lock = claim_shared(&planned.out_dir, shard, options.force)?;
     let report = match slice {
         Slice::Shard(s) => {
             let dealt = shard::deal(&shard::estimated_seconds(&planned.specs), s.count);
@@ -447,7 +454,7 @@ pub fn collect_folder(
         ran: 0,
         rerun: planned.rerun(),
     };
-    let _lock = claim(out_dir)?;
+    let _lock = claim(out_dir, false)?;
     for other in more {
         join_records(&planned, other)?;
     }
@@ -470,6 +477,7 @@ fn join_records(planned: &Planned, other: &Path) -> Result<(), StudyError> {
         .hint("collect together only folders that ran shards of the same `study run` command")
         .into());
     }
+    outdir::check(other, false)?;
     let _theirs_lock = OutLock::acquire(other)?;
     std::fs::create_dir_all(run::runs_dir(&planned.out_dir)).with_context(|| {
         format!(
@@ -482,12 +490,16 @@ fn join_records(planned: &Planned, other: &Path) -> Result<(), StudyError> {
             run::run_file(other, spec.seed),
             run::run_file(&planned.out_dir, spec.seed),
         );
-        if to.exists() || !from.is_file() {
+        // Ours stays if it is a file; theirs is read as any record (not
+        // through a link, not a device), copied as it is, checked at collect.
+        if std::fs::symlink_metadata(&to).is_ok_and(|m| m.file_type().is_file()) {
             continue;
         }
-        let bytes = std::fs::read(&from)
-            .with_context(|| format!("cannot read the record {}", from.display()))?;
-        write_atomic(&to, &bytes)?;
+        match outdir::read_own(&from, outdir::RECORD_LIMIT) {
+            Ok(bytes) => write_atomic(&to, &bytes)?,
+            Err(outdir::Unusable::Missing) => {}
+            Err(outdir::Unusable::Refused(why)) => eprintln!("study: not joined: {why}"),
+        }
     }
     Ok(())
 }
@@ -524,7 +536,7 @@ pub fn collect_study(path: &Path, options: &CollectOptions) -> Result<Collected,
         rerun: planned.rerun(),
     };
     let _lock = if planned.out_dir.is_dir() {
-        Some(claim(&planned.out_dir)?)
+        Some(claim(&planned.out_dir, false)?)
     } else {
         None
     };

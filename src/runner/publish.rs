@@ -7,13 +7,14 @@
 //! plot beside a new report.
 
 use crate::files::{is_temporary, sync_dir};
+use crate::runner::outdir::SMALL_LIMIT;
 use anyhow::Context;
 use std::fs::File;
 use std::path::{Path, PathBuf};
 
 pub const MANIFEST: &str = "manifest.json";
 
-const STAGING_PREFIX: &str = ".staging-";
+pub const STAGING_PREFIX: &str = ".staging-";
 
 /// Tables a study writes (some only when it has the data).
 const TABLES: [&str; 4] = [
@@ -33,7 +34,8 @@ pub struct Staging {
 impl Staging {
     pub fn create(out: &Path) -> anyhow::Result<Staging> {
         let dir = out.join(format!("{STAGING_PREFIX}{}", std::process::id()));
-        if dir.exists() {
+        // A link of this name is removed, never followed.
+        if std::fs::symlink_metadata(&dir).is_ok() {
             std::fs::remove_dir_all(&dir)
                 .with_context(|| format!("cannot remove {}", dir.display()))?;
         }
@@ -92,29 +94,12 @@ impl Drop for Staging {
     }
 }
 
-/// Remove what an interrupted or killed run left in OUT: staging folders
-/// and temporary files. Only call this holding OUT's lock.
-pub fn remove_leftovers(out: &Path) -> anyhow::Result<()> {
-    let entries =
-        std::fs::read_dir(out).with_context(|| format!("cannot list {}", out.display()))?;
-    for entry in entries.flatten() {
-        let name = entry.file_name().to_string_lossy().into_owned();
-        let path = entry.path();
-        if name.starts_with(STAGING_PREFIX) && path.is_dir() {
-            std::fs::remove_dir_all(&path)
-                .with_context(|| format!("cannot remove {}", path.display()))?;
-        } else if is_temporary(&name) && path.is_file() {
-            remove_if_present(&path)?;
-        }
-    }
-    Ok(())
-}
-
 /// The files the previous study published in OUT: as its manifest lists
 /// them; for a manifest of an earlier bonkers without the list, its tables,
 /// plots and report; with no manifest, only the table names.
 fn previous_outputs(out: &Path) -> Vec<String> {
-    let Ok(text) = std::fs::read_to_string(out.join(MANIFEST)) else {
+    let manifest = out.join(MANIFEST);
+    let Ok(text) = crate::runner::outdir::read_own_text(&manifest, SMALL_LIMIT) else {
         return TABLES.iter().map(|s| s.to_string()).collect();
     };
     let listed = serde_json::from_str::<serde_json::Value>(&text)
@@ -136,11 +121,20 @@ fn previous_outputs(out: &Path) -> Vec<String> {
             })
             .unwrap_or_default()
     });
-    // A manifest is a file anyone can edit: only plain names in OUT itself.
+    // A manifest is a file anyone can edit: only plain names in OUT itself,
+    // of the kinds a study publishes.
     names
         .into_iter()
         .filter(|n| !n.is_empty() && !n.contains(['/', '\\']) && n != ".." && n != ".")
+        .filter(|n| published_kind(n))
         .collect()
+}
+
+/// A name of the kind a study publishes: a table, a plot, the report.
+fn published_kind(name: &str) -> bool {
+    name.ends_with(".parquet")
+        || name.ends_with(".svg")
+        || ["report.md", "index.html", MANIFEST].contains(&name)
 }
 
 fn move_into(from: &Path, to: &Path, name: &str) -> anyhow::Result<()> {

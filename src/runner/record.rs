@@ -2,9 +2,19 @@
 //! strings in Rust's shortest round-trip form ("0.1", "NaN", "inf"): JSON has
 //! no NaN or infinity, and serde_json's number parsing is not exact to the
 //! last bit, while a resumed study must give bit-identical tables.
+//!
+//! A record starts with a checksum of the rest of its bytes:
+//! `{"checksum":"xxh3-64:<16 hex digits>","run_id":...}`, XXH3 (64 bits, the
+//! `xxhash-rust` crate, already built for polars) of everything after the
+//! checksum's comma, as written. A record changed after bonkers wrote it
+//! (a digit edited, a tool reformatting it, a torn write) fails it and its
+//! run is made again; so is a record without one (written before records
+//! had checksums, or not by bonkers). Not a defence against forgery, which
+//! anyone can recompute: a guard against trusting a record blindly.
 
 use crate::model::run_output::{Histogram, RunOutput, Series};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
+use xxhash_rust::xxh3::xxh3_64;
 
 /// A finished run, as handed to the store.
 #[derive(Debug, Clone, PartialEq)]
@@ -23,14 +33,61 @@ impl RunRecord {
         self.status == "ok"
     }
 
+    /// The record's file: checksum, then fields (see the module comment).
     pub fn to_json(&self) -> serde_json::Result<String> {
-        serde_json::to_string(&Saved::from(self))
+        let json = serde_json::to_string(&Saved::from(self))?;
+        // `{` + fields: the fields, after the checksum, are what it covers.
+        let fields = json.strip_prefix('{').unwrap_or(&json);
+        Ok(format!(
+            "{CHECKSUM}{:016x}\",{fields}",
+            xxh3_64(fields.as_bytes())
+        ))
     }
 
-    pub fn from_json(text: &str) -> serde_json::Result<RunRecord> {
-        serde_json::from_str::<Saved>(text).map(RunRecord::from)
+    /// A record's file read back, if its checksum holds.
+    pub fn from_json(text: &str) -> Result<RunRecord, RecordError> {
+        let rest = text.strip_prefix(CHECKSUM).ok_or(RecordError::NoChecksum)?;
+        let (hex, fields) = rest
+            .split_at_checked(16)
+            .and_then(|(hex, after)| Some((hex, after.strip_prefix("\",")?)))
+            .ok_or(RecordError::NoChecksum)?;
+        let sum = u64::from_str_radix(hex, 16).map_err(|_| RecordError::NoChecksum)?;
+        if xxh3_64(fields.as_bytes()) != sum {
+            return Err(RecordError::Damaged);
+        }
+        // The checksum is a field serde skips; the fields parse as always.
+        serde_json::from_str::<Saved>(text)
+            .map(RunRecord::from)
+            .map_err(RecordError::Parse)
     }
 }
+
+/// How a record's file starts, up to the checksum's hex digits.
+const CHECKSUM: &str = "{\"checksum\":\"xxh3-64:";
+
+/// Why a record's file is not a record to trust.
+#[derive(Debug)]
+pub enum RecordError {
+    NoChecksum,
+    Damaged,
+    Parse(serde_json::Error),
+}
+
+impl std::fmt::Display for RecordError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            RecordError::NoChecksum => f.write_str(
+                "has no checksum (written by an older bonkers, or not by bonkers), so it is not trusted",
+            ),
+            RecordError::Damaged => {
+                f.write_str("fails its checksum: it was changed after bonkers wrote it")
+            }
+            RecordError::Parse(e) => write!(f, "does not parse: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for RecordError {}
 
 #[derive(Clone, Copy)]
 struct F(f64);

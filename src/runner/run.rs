@@ -10,6 +10,7 @@ use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::runner::checkpoint::{self, Place};
 use crate::runner::cpu_time::thread_cpu_seconds;
+use crate::runner::outdir::{self, Unusable, remove_if_present};
 use crate::runner::progress::{Progress, ProgressMode};
 pub use crate::runner::record::RunRecord;
 use crate::runner::seeds::fnv1a;
@@ -158,6 +159,13 @@ pub fn run_subset(
 ) -> anyhow::Result<RunnerReport> {
     let picked = subset.pick(specs)?;
     let dir = runs_dir(out_dir);
+    // `outdir::check` refuses this first; a library caller may not have.
+    if std::fs::symlink_metadata(&dir).is_ok_and(|m| m.file_type().is_symlink()) {
+        bail!(
+            "{} is a symbolic link, which bonkers does not follow",
+            dir.display()
+        );
+    }
     if options.fresh {
         discard(specs, &picked, out_dir)?;
     }
@@ -178,7 +186,12 @@ pub fn run_subset(
                 tidied.mismatched += usize::from(record.ok());
                 todo.push(i);
             }
-            Stored::Missing | Stored::Unreadable(_) => todo.push(i),
+            Stored::Unreadable(why) => {
+                tidied.unusable += 1;
+                tidied.first_unusable.get_or_insert(why);
+                todo.push(i);
+            }
+            Stored::Missing => todo.push(i),
         }
     }
     let resumed = picked.len() - todo.len();
@@ -249,16 +262,23 @@ pub fn run_subset(
 }
 
 /// `--fresh`: forget the saved records of the picked runs. For the whole plan
-/// that is the whole runs folder; for a subset only its own records, since
-/// the others may belong to another invocation sharing the folder.
+/// that is every run file in the runs folder (records, checkpoints and
+/// their temporary files, by name: other files there stay); for a subset
+/// only its own, since the others may belong to another invocation sharing
+/// the folder.
 fn discard(specs: &[RunSpec], picked: &[usize], out_dir: &Path) -> anyhow::Result<()> {
     let dir = runs_dir(out_dir);
-    if !dir.exists() {
-        return Ok(());
-    }
     if picked.len() == specs.len() {
-        return std::fs::remove_dir_all(&dir)
-            .with_context(|| format!("cannot remove {}", dir.display()));
+        let Ok(entries) = std::fs::read_dir(&dir) else {
+            return Ok(());
+        };
+        for entry in entries.flatten() {
+            let name = entry.file_name().to_string_lossy().into_owned();
+            if outdir::is_run_file(&name) && !entry.file_type().is_ok_and(|t| t.is_dir()) {
+                remove_if_present(&entry.path())?;
+            }
+        }
+        return Ok(());
     }
     for &i in picked {
         remove_if_present(&run_file(out_dir, specs[i].seed))?;
@@ -272,15 +292,6 @@ fn remove_checkpoint(runs_dir: &Path, seed: u64) -> anyhow::Result<()> {
     remove_if_present(&checkpoint::file(runs_dir, seed))
 }
 
-fn remove_if_present(path: &Path) -> anyhow::Result<()> {
-    match std::fs::remove_file(path) {
-        Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
-            Err(e).with_context(|| format!("cannot remove {}", path.display()))
-        }
-        _ => Ok(()),
-    }
-}
-
 /// What `tidy` found among the saved runs.
 #[derive(Debug, Default)]
 struct Tidied {
@@ -289,6 +300,10 @@ struct Tidied {
     mismatched: usize,
     /// Run files of no planned run, removed.
     removed: usize,
+    /// Saved records of planned runs that cannot be trusted (changed since
+    /// written, no checksum, a link, ...), run again; why, for the first.
+    unusable: usize,
+    first_unusable: Option<String>,
 }
 
 impl Tidied {
@@ -303,6 +318,16 @@ impl Tidied {
                 self.mismatched
             ));
         }
+        if let Some(why) = &self.first_unusable {
+            let others = match self.unusable {
+                1 => String::new(),
+                n => format!(" (and {} more)", n - 1),
+            };
+            parts.push(format!(
+                "{} saved runs cannot be used and run again: {why}{others}",
+                self.unusable
+            ));
+        }
         if self.removed > 0 {
             parts.push(format!(
                 "removed {} saved runs that are not in this plan",
@@ -315,7 +340,8 @@ impl Tidied {
 
 /// Remove temporary files an interrupted writer left and run files (records
 /// and checkpoints) of no planned run, so the saved runs are those of this
-/// study.
+/// study. Only names bonkers makes (`outdir::is_run_file`) are touched; a
+/// link of such a name is removed, never followed.
 fn tidy(specs: &[RunSpec], out_dir: &Path) -> anyhow::Result<Tidied> {
     let dir = runs_dir(out_dir);
     let planned: HashSet<PathBuf> = specs
@@ -328,12 +354,14 @@ fn tidy(specs: &[RunSpec], out_dir: &Path) -> anyhow::Result<Tidied> {
     for entry in entries.flatten() {
         let path = entry.path();
         let name = entry.file_name().to_string_lossy().into_owned();
-        let temporary = crate::files::is_temporary(&name);
-        if temporary || (name.starts_with("run-") && !planned.contains(&path)) {
-            std::fs::remove_file(&path)
-                .with_context(|| format!("cannot remove {}", path.display()))?;
-            tidied.removed += usize::from(!temporary && name.ends_with(".json"));
+        if !outdir::is_run_file(&name)
+            || planned.contains(&path)
+            || entry.file_type().is_ok_and(|t| t.is_dir())
+        {
+            continue;
         }
+        remove_if_present(&path)?;
+        tidied.removed += usize::from(outdir::is_record(&name));
     }
     Ok(tidied)
 }
@@ -388,20 +416,22 @@ pub enum Stored {
     Found(RunRecord),
 }
 
-/// Read the record saved for `spec`, if any.
+/// Read the record saved for `spec`, if any: a regular file only (a link
+/// is not followed, a device or pipe not read), of at most
+/// `outdir::RECORD_LIMIT` bytes, whose checksum holds.
 pub fn read_record(out_dir: &Path, spec: &RunSpec) -> Stored {
     let path = run_file(out_dir, spec.seed);
-    let text = match std::fs::read_to_string(&path) {
+    let text = match outdir::read_own_text(&path, outdir::RECORD_LIMIT) {
         Ok(text) => text,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Stored::Missing,
-        Err(e) => return Stored::Unreadable(format!("cannot read {}: {e}", path.display())),
+        Err(Unusable::Missing) => return Stored::Missing,
+        Err(Unusable::Refused(why)) => return Stored::Unreadable(why),
     };
     match RunRecord::from_json(&text) {
         Ok(mut record) => {
             record.run_id = spec.run_id;
             Stored::Found(record)
         }
-        Err(e) => Stored::Unreadable(format!("{} does not parse: {e}", path.display())),
+        Err(e) => Stored::Unreadable(format!("{} {e}", path.display())),
     }
 }
 

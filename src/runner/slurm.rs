@@ -50,7 +50,8 @@ pub fn collect_script(out: &Path) -> PathBuf {
 
 /// The number of shards of the array script written for `out`, if any.
 pub fn array_shards(out: &Path) -> Option<u32> {
-    let text = std::fs::read_to_string(shards_script(out)).ok()?;
+    let limit = crate::runner::outdir::SMALL_LIMIT;
+    let text = crate::runner::outdir::read_own_text(&shards_script(out), limit).ok()?;
     text.lines()
         .find_map(|l| l.strip_prefix("#SBATCH --array=1-"))
         .and_then(|n| n.trim().parse().ok())

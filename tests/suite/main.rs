@@ -18,6 +18,7 @@ mod expansion_study;
 mod layers;
 mod mixing_study;
 mod movie;
+mod output_folder;
 mod parquet_schema;
 mod piston_2d;
 mod piston_common;

@@ -28,6 +28,7 @@ fn run_options(out: &Path) -> StudyOptions {
         yes: false,
         command_line: vec!["study".into(), "run".into()],
         checkpoint_every: None,
+        force: false,
     }
 }
 

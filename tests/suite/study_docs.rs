@@ -61,6 +61,7 @@ fn the_documented_example_runs() {
         yes: false,
         command_line: vec!["study".into()],
         checkpoint_every: None,
+        force: false,
     };
     let outcome = run_study(
         &file,

@@ -47,6 +47,7 @@ fn options(out: &Path, threads: usize) -> StudyOptions {
         yes: false,
         command_line: vec!["study".into(), "run".into()],
         checkpoint_every: None,
+        force: false,
     }
 }
 
@@ -375,8 +376,8 @@ fn a_second_study_on_the_same_out_dir_fails_clearly() {
     run_study(&file, &options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
 }
 
-/// What a killed run leaves (a staging folder, temporary files of an older
-/// or this version) is removed by the next.
+/// What a killed run leaves (a staging folder, temporary files) is removed
+/// by the next. (Files of other names stay: `output_folder.rs`.)
 #[test]
 fn leftovers_of_a_killed_run_are_cleaned() {
     let dir = tempfile::tempdir().unwrap();
@@ -387,9 +388,9 @@ fn leftovers_of_a_killed_run_are_cleaned() {
     let leftovers = [
         out.join(".staging-4000000").join("runs.parquet"),
         out.join(".summary.parquet.4000000-3.tmp"),
-        out.join("report.md.tmp"),
+        out.join(".report.md.4000000-1.tmp"),
         out.join("runs").join(".run-17.json.4000000-0.tmp"),
-        out.join("runs").join("run-5.json.tmp"),
+        out.join("runs").join(".run-5.ckpt.4000000-2.tmp"),
     ];
     for f in &leftovers {
         std::fs::write(f, "partial").unwrap();

@@ -177,6 +177,7 @@ fn options(out: &Path) -> StudyOptions {
         yes: false,
         command_line: vec!["study".into(), "run".into()],
         checkpoint_every: None,
+        force: false,
     }
 }
 
