@@ -170,7 +170,10 @@ fn values_on_the_hand_made_run<const D: usize>() {
     let (count, energy) = (&profile.histograms[0], &profile.histograms[1]);
     assert_eq!(count.observable, "temperature_x.count");
     assert_eq!((count.lo[0], count.hi[99]), (0.0, L));
-    assert_eq!([count.count[25], count.count[50], count.count[75]], [2.0; 3]);
+    assert_eq!(
+        [count.count[25], count.count[50], count.count[75]],
+        [2.0; 3]
+    );
     assert_eq!(count.count.iter().sum::<f64>(), 6.0);
     let (particles, _) = scene::<D>();
     assert_eq!(energy.count[75], 2.0 * particles[2].kinetic_energy());

@@ -78,13 +78,12 @@ impl Line {
 /// Mean density over the slabs the fit used (the centre's, to second order).
 pub fn centre_density(p: &Profile, length: f64, width: f64) -> f64 {
     let mid = length / 2.0;
-    let v: Vec<f64> = p
-        .x
-        .iter()
-        .zip(&p.density)
-        .filter(|(x, _)| (**x - mid).abs() <= width * length / 2.0)
-        .map(|(_, n)| *n)
-        .collect();
+    let v: Vec<f64> =
+        p.x.iter()
+            .zip(&p.density)
+            .filter(|(x, _)| (**x - mid).abs() <= width * length / 2.0)
+            .map(|(_, n)| *n)
+            .collect();
     v.iter().sum::<f64>() / v.len() as f64
 }
 

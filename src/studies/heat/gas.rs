@@ -6,6 +6,7 @@
 use crate::model::descriptor::Descriptor;
 use crate::model::scene::{Boundary, Side, Velocities};
 use crate::theory::heat::{compressibility, exchange_rate, mean_free_path};
+use crate::theory::heat_free::FreeRelaxation;
 use std::f64::consts::PI;
 
 #[derive(Debug, Clone, PartialEq)]
@@ -97,10 +98,12 @@ impl Gas {
                     hot_high: if ta > tb { a } else { b },
                 })
             }
-            _ => Err("the heat analysis needs every thermal wall at one temperature \
+            _ => Err(
+                "the heat analysis needs every thermal wall at one temperature \
                  (relaxation) or exactly two on axis 0, low and high, at different \
                  temperatures (conduction)"
-                .into()),
+                    .into(),
+            ),
         }
     }
 
@@ -162,6 +165,27 @@ impl Gas {
             f64::INFINITY
         };
         path / self.size[0]
+    }
+
+    /// The collisionless relaxation from `start` to walls at `wall`, on a
+    /// grid of `dt` up to `until`; only for the two walls across x (None
+    /// otherwise). Exact for point particles.
+    pub fn free(&self, wall: f64, start: f64, until: f64) -> Option<FreeRelaxation> {
+        if self.walls.len() != 2 || self.walls.iter().any(|w| w.0 != 0) {
+            return None;
+        }
+        let length = self.size[0] - self.diameter;
+        let dt = (length / (start.max(wall) / self.mass).sqrt() / 400.0).min(until / 100.0);
+        let steps = (until / dt).ceil() as usize;
+        Some(FreeRelaxation::new(
+            self.dimension,
+            length,
+            self.mass,
+            wall,
+            start,
+            dt,
+            steps,
+        ))
     }
 
     pub fn knudsen(&self) -> f64 {

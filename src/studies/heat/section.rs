@@ -4,9 +4,7 @@
 //! wall (profiles, flux through each wall, jumps, conductivity beside
 //! Chapman-Enskog and Enskog).
 
-use super::{
-    Experiment, Gas, Line, NAME, OPTIONS, Profile, RESULTS, model, passage, temperatures,
-};
+use super::{Experiment, Gas, Line, NAME, OPTIONS, Profile, RESULTS, model, passage, temperatures};
 use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::descriptor::Descriptor;
 use crate::model::report::{Figure, ReportSection};
@@ -59,12 +57,10 @@ fn label(spec: &RunSpec, gas: &Gas) -> String {
 }
 
 pub fn section(d: &Descriptor, runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
-    let mut groups: BTreeMap<(Option<String>, u64), Runs> = BTreeMap::new();
+    // Sweep points and cases are numbered apart; in plan order.
+    let mut groups: BTreeMap<u64, Runs> = BTreeMap::new();
     for r in runs {
-        groups
-            .entry((r.0.case.clone(), r.0.point_id))
-            .or_default()
-            .push(r);
+        groups.entry(r.0.point_id).or_default().push(r);
     }
     let mut relaxing = Vec::new();
     let mut conducting = Vec::new();
@@ -131,6 +127,9 @@ fn relaxation(points: &[(Gas, f64, Runs)], figures: &mut Vec<Figure>) -> String 
         let tau_curve = passage(&t, &curve, *wall, (-1f64).exp());
         let tau = stat(rs, "relaxation_time");
         let ratio = stat(rs, "relaxation_ratio");
+        let ratio_free = stat(rs, "relaxation_ratio_free");
+        let half_d = gas.dimension as f64 / 2.0;
+        let free = gas.free(*wall, start, t.last().copied().unwrap_or(0.0));
         let kn = gas.knudsen();
         if ratio.mean.is_finite() && kn.is_finite() {
             ratio_bars.push((
@@ -143,13 +142,17 @@ fn relaxation(points: &[(Gas, f64, Runs)], figures: &mut Vec<Figure>) -> String 
         let (cpu, collisions) = cost(rs);
         let _ = writeln!(
             rows,
-            "| {name} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            "| {name} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
             num(kn),
             rs.len(),
             pm(tau.mean, tau.stderr),
             num(tau_curve),
             num(m.relaxation_time()),
             pm(ratio.mean, ratio.stderr),
+            num(free
+                .as_ref()
+                .map_or(f64::NAN, |f| f.relaxation_time(half_d * wall))),
+            pm(ratio_free.mean, ratio_free.stderr),
             with_z(&stat(rs, "initial_rate_ratio"), 1.0),
             with_z(&stat(rs, "late_temperature"), *wall),
             num(cpu),
@@ -176,10 +179,25 @@ fn relaxation(points: &[(Gas, f64, Runs)], figures: &mut Vec<Figure>) -> String 
             dashed: true,
             label: Some("well-mixed model".into()),
         });
+        if let Some(f) = &free {
+            layers.push(Layer::Line {
+                points: t[..shown]
+                    .iter()
+                    .map(|&x| (x, f.energy_at(x) / half_d))
+                    .collect(),
+                paint: colour(2),
+                width: 2,
+                dashed: true,
+                label: Some("collisionless (exact for points)".into()),
+            });
+        }
         figures.push(Figure {
             file: file.clone(),
             chart: ChartSpec {
-                title: format!("Temperature relaxing to walls at kT = {}, {name}", num(*wall)),
+                title: format!(
+                    "Temperature relaxing to walls at kT = {}, {name}",
+                    num(*wall)
+                ),
                 x_label: "time t [σ √(m/kT)]".into(),
                 y_label: "kinetic temperature 2K/(dN) [kT]".into(),
                 x_log: false,
@@ -189,14 +207,14 @@ fn relaxation(points: &[(Gas, f64, Runs)], figures: &mut Vec<Figure>) -> String 
         });
         let _ = writeln!(
             pictures,
-            "![{name}: ensemble mean of the temperature (band: ±1 standard error over {} runs) and the well-mixed model from the same start (dashed).]({file})\n",
+            "![{name}: ensemble mean of the temperature (band: ±1 standard error over {} runs) and the well-mixed model and the collisionless gas from the same start (dashed).]({file})\n",
             rs.len()
         );
     }
     md.push_str(&pictures);
     md.push_str(
-        "| point | Kn = λ/L | runs | τ (runs) | τ of the mean curve | τ well-mixed | τ / τ well-mixed | initial change / exact (1) | late T (T_w) | CPU s | collisions |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| point | Kn = λ/L | runs | τ (runs) | τ of the mean curve | τ well-mixed | τ / τ well-mixed | τ collisionless | τ / τ collisionless | initial change / exact (1) | late T (T_w) | CPU s | collisions |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     md.push_str(&rows);
     md.push('\n');
@@ -222,7 +240,10 @@ fn relaxation(points: &[(Gas, f64, Runs)], figures: &mut Vec<Figure>) -> String 
                     },
                     Layer::Line {
                         points: vec![
-                            (ratio_bars.iter().map(|b| b.0).fold(f64::INFINITY, f64::min), 1.0),
+                            (
+                                ratio_bars.iter().map(|b| b.0).fold(f64::INFINITY, f64::min),
+                                1.0,
+                            ),
                             (ratio_bars.iter().map(|b| b.0).fold(0.0, f64::max), 1.0),
                         ],
                         paint: colour(1),
@@ -241,7 +262,11 @@ fn relaxation(points: &[(Gas, f64, Runs)], figures: &mut Vec<Figure>) -> String 
     md
 }
 
-fn conduction(d: &Descriptor, points: &[(Gas, (f64, f64, bool), Runs)], figures: &mut Vec<Figure>) -> String {
+fn conduction(
+    d: &Descriptor,
+    points: &[(Gas, (f64, f64, bool), Runs)],
+    figures: &mut Vec<Figure>,
+) -> String {
     let width = value(d, NAME, OPTIONS, "fit_width");
     let mut md = String::from(CONDUCT_INTRO);
     let mut rows = String::new();
@@ -255,7 +280,11 @@ fn conduction(d: &Descriptor, points: &[(Gas, (f64, f64, bool), Runs)], figures:
             .iter()
             .filter_map(|r| {
                 let h = |n: &str| r.1.histograms.iter().find(|h| h.observable == n);
-                Some(Profile::of(gas, h("temperature_x.count")?, h("temperature_x.energy")?))
+                Some(Profile::of(
+                    gas,
+                    h("temperature_x.count")?,
+                    h("temperature_x.energy")?,
+                ))
             })
             .collect();
         let Some(first) = profiles.first() else {
@@ -263,7 +292,15 @@ fn conduction(d: &Descriptor, points: &[(Gas, (f64, f64, bool), Runs)], figures:
         };
         let bins = first.x.len();
         let t_mean: Vec<Stats> = (0..bins)
-            .map(|b| Stats::of(&profiles.iter().map(|p| p.temperature[b]).filter(|v| v.is_finite()).collect::<Vec<_>>()))
+            .map(|b| {
+                Stats::of(
+                    &profiles
+                        .iter()
+                        .map(|p| p.temperature[b])
+                        .filter(|v| v.is_finite())
+                        .collect::<Vec<_>>(),
+                )
+            })
             .collect();
         let n_mean: Vec<f64> = (0..bins)
             .map(|b| profiles.iter().map(|p| p.density[b]).sum::<f64>() / profiles.len() as f64)
@@ -272,7 +309,9 @@ fn conduction(d: &Descriptor, points: &[(Gas, (f64, f64, bool), Runs)], figures:
             x: first.x.clone(),
             temperature: t_mean.iter().map(|s| s.mean).collect(),
             density: n_mean.clone(),
-            weight: (0..bins).map(|b| profiles.iter().map(|p| p.weight[b]).sum()).collect(),
+            weight: (0..bins)
+                .map(|b| profiles.iter().map(|p| p.weight[b]).sum())
+                .collect(),
         };
         let line = Line::fit(&pooled, length, width);
         let kappa = stat(rs, "conductivity");
@@ -283,7 +322,12 @@ fn conduction(d: &Descriptor, points: &[(Gas, (f64, f64, bool), Runs)], figures:
         let ratio_e = stat(rs, "conductivity_ratio_enskog");
         let ratio_0 = stat(rs, "conductivity_ratio_dilute");
         if ratio_0.mean.is_finite() {
-            bars.push((phi.mean, ratio_0.mean - ratio_0.stderr, ratio_0.mean, ratio_0.mean + ratio_0.stderr));
+            bars.push((
+                phi.mean,
+                ratio_0.mean - ratio_0.stderr,
+                ratio_0.mean,
+                ratio_0.mean + ratio_0.stderr,
+            ));
         }
         let (cpu, collisions) = cost(rs);
         let _ = writeln!(
@@ -322,7 +366,13 @@ fn conduction(d: &Descriptor, points: &[(Gas, (f64, f64, bool), Runs)], figures:
             count(collisions),
         );
         let file = format!("heat_profile_{k}.svg");
-        let mut layers = mean_with_band(&first.x, &t_mean, colour(0), "temperature (mean ± standard error)".into()).to_vec();
+        let mut layers = mean_with_band(
+            &first.x,
+            &t_mean,
+            colour(0),
+            "temperature (mean ± standard error)".into(),
+        )
+        .to_vec();
         layers.push(Layer::Line {
             points: [gas.diameter / 2.0, length - gas.diameter / 2.0]
                 .iter()
@@ -331,9 +381,16 @@ fn conduction(d: &Descriptor, points: &[(Gas, (f64, f64, bool), Runs)], figures:
             paint: colour(1),
             width: 2,
             dashed: true,
-            label: Some(format!("straight line through the middle {}%", num(100.0 * width))),
+            label: Some(format!(
+                "straight line through the middle {}%",
+                num(100.0 * width)
+            )),
         });
-        let (x_hot, x_cold) = if points[k].1.2 { (length, 0.0) } else { (0.0, length) };
+        let (x_hot, x_cold) = if points[k].1.2 {
+            (length, 0.0)
+        } else {
+            (0.0, length)
+        };
         layers.push(Layer::Markers {
             points: vec![(x_hot, *hot), (x_cold, *cold)],
             paint: colour(3),
@@ -343,17 +400,29 @@ fn conduction(d: &Descriptor, points: &[(Gas, (f64, f64, bool), Runs)], figures:
         let n_max = n_mean.iter().copied().fold(0.0, f64::max);
         if n_max > 0.0 {
             layers.push(Layer::Line {
-                points: first.x.iter().zip(&n_mean).map(|(x, n)| (*x, n / n_max * hot)).collect(),
+                points: first
+                    .x
+                    .iter()
+                    .zip(&n_mean)
+                    .map(|(x, n)| (*x, n / n_max * hot))
+                    .collect(),
                 paint: colour(2),
                 width: 1,
                 dashed: false,
-                label: Some(format!("density × {} (its maximum at kT_hot)", num(hot / n_max))),
+                label: Some(format!(
+                    "density × {} (its maximum at kT_hot)",
+                    num(hot / n_max)
+                )),
             });
         }
         figures.push(Figure {
             file: file.clone(),
             chart: ChartSpec {
-                title: format!("Steady profile between walls at kT = {} and {}, {name}", num(*hot), num(*cold)),
+                title: format!(
+                    "Steady profile between walls at kT = {} and {}, {name}",
+                    num(*hot),
+                    num(*cold)
+                ),
                 x_label: "x [σ]".into(),
                 y_label: "kinetic temperature [kT]".into(),
                 x_log: false,
@@ -396,13 +465,19 @@ fn conduction(d: &Descriptor, points: &[(Gas, (f64, f64, bool), Runs)], figures:
                 y_log: false,
                 layers: vec![
                     Layer::Line {
-                        points: (0..=50).map(|i| top * i as f64 / 50.0).map(|p| (p, enskog_factor(dim, p))).collect(),
+                        points: (0..=50)
+                            .map(|i| top * i as f64 / 50.0)
+                            .map(|p| (p, enskog_factor(dim, p)))
+                            .collect(),
                         paint: colour(1),
                         width: 2,
                         dashed: true,
                         label: Some("Enskog".into()),
                     },
-                    Layer::ErrorBars { bars: bars.clone(), paint: colour(0) },
+                    Layer::ErrorBars {
+                        bars: bars.clone(),
+                        paint: colour(0),
+                    },
                     Layer::Markers {
                         points: bars.iter().map(|b| (b.0, b.2)).collect(),
                         paint: colour(0),
@@ -411,7 +486,10 @@ fn conduction(d: &Descriptor, points: &[(Gas, (f64, f64, bool), Runs)], figures:
                 ],
             },
         });
-        let _ = writeln!(md, "![The measured conductivity over Chapman-Enskog's at the centre's temperature, against the packing fraction there, beside Enskog's dense-gas factor (dashed).]({file})\n");
+        let _ = writeln!(
+            md,
+            "![The measured conductivity over Chapman-Enskog's at the centre's temperature, against the packing fraction there, beside Enskog's dense-gas factor (dashed).]({file})\n"
+        );
     }
     md
 }
