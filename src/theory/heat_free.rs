@@ -160,7 +160,10 @@ mod tests {
         // slowly: particles with v_x -> 0 take ever longer to reach a wall
         // (an algebraic tail).
         let (e100, e390) = (r.energy_at(100.0) - tw, r.energy_at(390.0) - tw);
-        assert!(0.0 < e390 && e390 < 0.5 * e100 && e100 < 0.1, "{e100} {e390}");
+        assert!(
+            0.0 < e390 && e390 < 0.5 * e100 && e100 < 0.1,
+            "{e100} {e390}"
+        );
         // Early: per particle, (2/L) sqrt(kT0 / 2 pi m) hits per unit time
         // each moving (3/2)(T_w - T0).
         let rate = 2.0 / l * (t0 / (2.0 * std::f64::consts::PI)).sqrt() * 1.5 * (tw - t0);

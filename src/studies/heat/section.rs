@@ -511,9 +511,15 @@ uniform Maxwellian at T0, so its first change is known exactly, at any density: 
 measured change of T over the first tenth of τ well-mixed beside it. A gas that stays uniform and Maxwellian \
 (\"well mixed\") then follows dT/dt = c √T (T_w − T), solved in closed form (dashed). That needs two things at once: \
 collisions frequent enough to keep the velocities Maxwellian near the walls, and heat carried across the box faster \
-than the walls exchange it. The second fails in a dense gas (the centre lags behind: heat diffuses in), the first in \
-a dilute one (the walls reset the fast particles first, the slow ones keep their energy longer), so τ / τ well-mixed \
-exceeds 1 at both ends. The settled temperature is T_w exactly (the walls make the gas canonical at T_w).\n\n";
+than the walls exchange it. The second fails in a dense gas: the centre lags behind the walls (heat diffuses in) and \
+τ exceeds the model's. The first fails in a dilute gas: the walls reset the fast particles first (they hit more \
+often) and nothing re-Maxwellises the rest, so the gas near the walls stays at T0 longer and the excess, carried \
+mostly by the fast particles, falls faster than the model's at first; later the slow particles, which reach a wall \
+last, make a long algebraic tail. Without collisions this is exact (the collisionless curve, dashed in its own colour: each particle \
+keeps its velocity until a wall replaces it; docs/heat.md solves the renewal equation); point particles (radius 0) \
+are that case. With every wall at T_w the gas settles at T_w exactly (the walls make it canonical at T_w), but a \
+collisionless one gets there only as fast as its slowest particles reach a wall, so its late mean can still sit \
+above T_w at the end of a run, as can that of a gas whose relaxation is not many times shorter than the run.\n\n";
 
 const CONDUCT_INTRO: &str = "### Heat conduction between a hot and a cold wall\n\n\
 The wall at low x is hot, the one at high x cold, y periodic; after the steady state is reached (`run.equilibrate`), \
