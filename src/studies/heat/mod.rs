@@ -5,6 +5,7 @@
 //! wall conducts heat, and its conductivity is set beside Chapman-Enskog and
 //! Enskog. docs/heat.md derives the theory.
 
+mod chain;
 mod conduct;
 mod gas;
 mod relax;
@@ -66,6 +67,7 @@ pub const RESULTS: &[&str] = &[
     "centre_density",
     "centre_packing",
     "conductivity",
+    "conductivity_effective",
     "conductivity_dilute",
     "conductivity_enskog",
     "conductivity_ratio_dilute",
@@ -230,6 +232,10 @@ fn conduction(
             ("centre_density", n),
             ("centre_packing", phi),
             ("conductivity", kappa),
+            // The whole chain's: the walls' temperature difference over
+            // their distance, jumps included (what 1D studies of anomalous
+            // conduction report against N).
+            ("conductivity_effective", flux * length / (hot - cold)),
             ("conductivity_dilute", dilute),
             ("conductivity_enskog", enskog),
             ("conductivity_ratio_dilute", kappa / dilute),

@@ -21,9 +21,9 @@ use std::fmt::Write;
 /// The relaxation charts show this many well-mixed relaxation times.
 const SHOWN: f64 = 5.0;
 
-type Runs<'a> = Vec<&'a (RunSpec, RunOutput)>;
+pub(super) type Runs<'a> = Vec<&'a (RunSpec, RunOutput)>;
 
-fn stat(rs: &Runs, name: &str) -> Stats {
+pub(super) fn stat(rs: &Runs, name: &str) -> Stats {
     let v: Vec<f64> = rs
         .iter()
         .filter_map(|r| r.1.scalar(name))
@@ -33,14 +33,14 @@ fn stat(rs: &Runs, name: &str) -> Stats {
 }
 
 /// "mean ± se (z)" against `theory`.
-fn with_z(s: &Stats, theory: f64) -> String {
+pub(super) fn with_z(s: &Stats, theory: f64) -> String {
     match z_score(s, theory) {
         Some(z) => format!("{} (z = {:+.1})", pm(s.mean, s.stderr), z),
         None => pm(s.mean, s.stderr),
     }
 }
 
-fn cost(rs: &Runs) -> (f64, u64) {
+pub(super) fn cost(rs: &Runs) -> (f64, u64) {
     (
         rs.iter().map(|r| r.1.cpu_seconds).sum(),
         rs.iter().map(|r| r.1.collisions).sum(),
@@ -83,8 +83,13 @@ pub fn section(d: &Descriptor, runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<
     if !relaxing.is_empty() {
         md.push_str(&relaxation(&relaxing, &mut figures));
     }
-    if !conducting.is_empty() {
-        md.push_str(&conduction(d, &conducting, &mut figures));
+    // Rods conduct anomalously: their own part.
+    let (rods, balls): (Vec<_>, Vec<_>) = conducting.into_iter().partition(|p| p.0.dimension == 1);
+    if !balls.is_empty() {
+        md.push_str(&conduction(d, &balls, &mut figures));
+    }
+    if !rods.is_empty() {
+        md.push_str(&super::chain::section(&rods, &mut figures));
     }
     md.push_str(METHODS);
     Ok(ReportSection {
