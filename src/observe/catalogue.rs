@@ -7,6 +7,7 @@ use super::density_x::DensityX;
 use super::energy_autocorrelation::EnergyAutocorrelation;
 use super::energy_concentration::EnergyConcentration;
 use super::energy_share::EnergyShare;
+use super::energy_x::EnergyX;
 use super::entry::{Entry, Kind, Observable, Part, Setup};
 use super::gas_energy_by_side::GasEnergyBySide;
 use super::kinetic_energy::KineticEnergy;
@@ -22,7 +23,6 @@ use super::scaled_velocity_x::ScaledVelocityX;
 use super::side_counts::SideCounts;
 use super::speed_spread::SpeedSpread;
 use super::temperature::{MeanTemperature, Temperature};
-use super::temperature_x::TemperatureX;
 use super::velocities::Velocities;
 use super::velocity_x_each::VelocityXEach;
 use super::velocity_x_halves::VelocityXHalves;
@@ -78,7 +78,7 @@ catalogue![
     PositionXEach,
     ScaledSpeed,
     DensityX,
-    TemperatureX,
+    EnergyX,
     PairDistance,
 ];
 

@@ -41,7 +41,7 @@ sample_every = {sample:?}
 
 [observe]
 scalars = ["wall_heat"]
-histograms = ["temperature_x"]
+histograms = ["energy_x"]
 
 [analysis.heat]
 {extra}
@@ -193,7 +193,7 @@ fn steady_conduction_balances_the_walls() {
         .iter()
         .map(|(_, o)| {
             let h = |n: &str| o.histograms.iter().find(|h| h.observable == n).unwrap();
-            let p = Profile::of(&gas, h("temperature_x.count"), h("temperature_x.energy"));
+            let p = Profile::of(&gas, h("energy_x.count"), h("energy_x.energy"));
             let line = Line::fit(&p, 50.0, 0.5);
             let (mut inner, mut outer) = (Vec::new(), Vec::new());
             for (x, t) in p.x.iter().zip(&p.temperature) {

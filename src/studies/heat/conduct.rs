@@ -17,7 +17,7 @@ pub struct Profile {
 }
 
 impl Profile {
-    /// From the `temperature_x` histograms (count, energy) of a run.
+    /// From the `energy_x` histograms (count, energy) of a run.
     pub fn of(gas: &Gas, count: &Histogram, energy: &Histogram) -> Profile {
         let samples = count.count.iter().sum::<f64>() / gas.particles;
         let cross = gas.wall_area(0);

@@ -200,12 +200,12 @@ fn conduction(
         out.histograms
             .iter()
             .find(|h| h.observable == name)
-            .ok_or("the heat analysis of a hot and a cold wall needs `histograms = [\"temperature_x\"]` in [observe]")
+            .ok_or("the heat analysis of a hot and a cold wall needs `histograms = [\"energy_x\"]` in [observe]")
     };
     let profile = Profile::of(
         gas,
-        histogram("temperature_x.count")?,
-        histogram("temperature_x.energy")?,
+        histogram("energy_x.count")?,
+        histogram("energy_x.energy")?,
     );
     let length = gas.size[0];
     let width = value(d, NAME, OPTIONS, "fit_width");

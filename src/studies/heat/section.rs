@@ -287,8 +287,8 @@ fn conduction(
                 let h = |n: &str| r.1.histograms.iter().find(|h| h.observable == n);
                 Some(Profile::of(
                     gas,
-                    h("temperature_x.count")?,
-                    h("temperature_x.energy")?,
+                    h("energy_x.count")?,
+                    h("energy_x.energy")?,
                 ))
             })
             .collect();
@@ -529,7 +529,7 @@ above T_w at the end of a run, as can that of a gas whose relaxation is not many
 const CONDUCT_INTRO: &str = "### Heat conduction between a hot and a cold wall\n\n\
 The wall at low x is hot, the one at high x cold, y periodic; after the steady state is reached (`run.equilibrate`), \
 each run measures the heat each wall gives the gas (`wall_heat`) and the temperature and density across x \
-(`temperature_x`). In the steady state the flux in at the hot wall equals the flux out at the cold one (their \
+(`energy_x`). In the steady state the flux in at the hot wall equals the flux out at the cold one (their \
 difference is the change of the gas's energy over the run, over the time and area). The conductivity is the flux \
 over the gradient of a straight line fitted through the middle of the profile, away from the walls' Knudsen layers, \
 and is set beside the dilute gas's (Chapman-Enskog, first Sonine approximation: κ0 = (2k/σ)√(kT/πm) for disks) \
@@ -546,7 +546,7 @@ T from the first sample to the first sample after `initial_window` × τ well-mi
 first order is exact for the uniform Maxwellian start (what is left of the model is the curvature, a few per cent of \
 a tenth of τ). `late_temperature`: the mean T over the last half of the run.\n\n\
 **Conduction**: `flux_in` = heat from the hot wall / (time × wall area), `flux_out` = heat into the cold wall, likewise; \
-`flux_imbalance` their difference. `temperature_x` bins x into 100 slabs; per slab T = 2E/(d count), n = count / \
+`flux_imbalance` their difference. `energy_x` bins x into 100 slabs; per slab T = 2E/(d count), n = count / \
 (samples × slab volume). A straight line through the slabs within `fit_width`/2 of the middle (weighted by \
 particle-samples) gives `gradient` and `centre_temperature`; `centre_density` is the mean density over those slabs, \
 `centre_packing` φ there. `conductivity` = flux / |gradient|; `conductivity_dilute` and `conductivity_enskog` at the \

@@ -4,6 +4,8 @@
 //! T = 2 energy / (d count); density: count / (samples * slab volume).
 //! Coarser than `density_x` on purpose: a heat-conduction profile varies
 //! over mean free paths, not over the layering of a dense gas at a wall.
+//! Summed over the run for a steady profile; `temperature_x` gives the
+//! temperature about each slab's flow at every sample instead.
 
 use super::state::{StateIn, StateOut};
 use super::{Context, Entry, Kind, Measure, Observable, Part, Setup};
@@ -14,24 +16,24 @@ use crate::model::run_output::{Histogram, RunOutput};
 /// Slabs across the box, whatever its length.
 pub const BINS: usize = 100;
 
-pub struct TemperatureX {
+pub struct EnergyX {
     length: f64,
     count: Vec<f64>,
     energy: Vec<f64>,
 }
 
-impl Observable for TemperatureX {
+impl Observable for EnergyX {
     const ENTRY: Entry = Entry {
-        name: "temperature_x",
+        name: "energy_x",
         kind: Kind::Histograms,
-        writes: "temperature_x.<count|energy>",
+        writes: "energy_x.<count|energy>",
         label: "x (<count|energy> per slab)",
         unit: "σ",
         needs: &[Need::Sampling],
         doc: "number (count) and kinetic energy (energy) of the movable particles at every sample in 100 slabs across x: the temperature profile T = 2 energy / (d count)",
     };
     fn part<const D: usize>(_: &Setup) -> Part<D> {
-        Part::Observer(Box::new(TemperatureX {
+        Part::Observer(Box::new(EnergyX {
             length: f64::NAN,
             count: vec![0.0; BINS],
             energy: vec![0.0; BINS],
@@ -39,7 +41,7 @@ impl Observable for TemperatureX {
     }
 }
 
-impl<const D: usize> Observer<D> for TemperatureX {
+impl<const D: usize> Observer<D> for EnergyX {
     fn sample(&mut self, s: &Snapshot<D>) {
         self.length = s.sim_box.size[0];
         let bins = BINS as f64;
@@ -56,7 +58,7 @@ impl<const D: usize> Observer<D> for TemperatureX {
     }
 }
 
-impl<const D: usize> Measure<D> for TemperatureX {
+impl<const D: usize> Measure<D> for EnergyX {
     fn uses_samples(&self) -> bool {
         true
     }
@@ -71,7 +73,7 @@ impl<const D: usize> Measure<D> for TemperatureX {
         self.count = from.list()?;
         self.energy = from.list()?;
         if self.count.len() != BINS || self.energy.len() != BINS {
-            return Err(format!("temperature_x keeps {BINS} slabs"));
+            return Err(format!("energy_x keeps {BINS} slabs"));
         }
         Ok(())
     }
@@ -81,7 +83,7 @@ impl<const D: usize> Measure<D> for TemperatureX {
         let hi: Vec<f64> = (0..BINS).map(|b| (b + 1) as f64 * w).collect();
         for (name, values) in [("count", self.count), ("energy", self.energy)] {
             out.histograms.push(Histogram {
-                observable: format!("temperature_x.{name}"),
+                observable: format!("energy_x.{name}"),
                 lo: lo.clone(),
                 hi: hi.clone(),
                 count: values,
