@@ -7,6 +7,7 @@ use super::density_x::DensityX;
 use super::energy_autocorrelation::EnergyAutocorrelation;
 use super::energy_concentration::EnergyConcentration;
 use super::energy_share::EnergyShare;
+use super::energy_x::EnergyX;
 use super::entry::{Entry, Kind, Observable, Part, Setup};
 use super::gas_energy_by_side::GasEnergyBySide;
 use super::kinetic_energy::KineticEnergy;
@@ -77,6 +78,7 @@ catalogue![
     PositionXEach,
     ScaledSpeed,
     DensityX,
+    EnergyX,
     PairDistance,
 ];
 

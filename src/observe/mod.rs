@@ -20,6 +20,7 @@ mod density_x;
 mod energy_autocorrelation;
 mod energy_concentration;
 mod energy_share;
+mod energy_x;
 mod gas_energy_by_side;
 mod kinetic_energy;
 mod kinetic_energy_by_species;

@@ -164,6 +164,19 @@ fn values_on_the_hand_made_run<const D: usize>() {
     // Every particle at both samples, in bins of width 0.2 over [-6, 6).
     assert_eq!(histogram.count.iter().sum::<f64>(), 6.0);
     assert_eq!((histogram.lo[0], histogram.hi[59]), (-6.0, 6.0));
+
+    // Slabs of L/100: particles at x = 1, 2, 3 in slabs 25, 50, 75, twice.
+    let profile = observe::<D>(Kind::Histograms, &["energy_x"]).unwrap();
+    let (count, energy) = (&profile.histograms[0], &profile.histograms[1]);
+    assert_eq!(count.observable, "energy_x.count");
+    assert_eq!((count.lo[0], count.hi[99]), (0.0, L));
+    assert_eq!(
+        [count.count[25], count.count[50], count.count[75]],
+        [2.0; 3]
+    );
+    assert_eq!(count.count.iter().sum::<f64>(), 6.0);
+    let (particles, _) = scene::<D>();
+    assert_eq!(energy.count[75], 2.0 * particles[2].kinetic_energy());
 }
 
 #[test]
@@ -186,7 +199,7 @@ fn a_histogram_name_builds_that_histogram_and_an_unknown_one_is_an_error() {
     assert_eq!(
         err,
         "unknown histograms observable `speed`; known: scaled_velocity_x, velocity_x_each, \
-         velocity_x_halves, position_x_each, scaled_speed, density_x, pair_distance"
+         velocity_x_halves, position_x_each, scaled_speed, density_x, energy_x, pair_distance"
     );
     // A name of another kind is not a histogram either.
     assert!(observe::<2>(Kind::Histograms, &["kinetic_energy"]).is_err());

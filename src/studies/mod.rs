@@ -7,6 +7,7 @@ pub mod accuracy;
 pub mod curves;
 pub mod equilibrium;
 pub mod expansion;
+pub mod heat;
 pub mod mixing;
 pub mod options;
 pub mod piston;
@@ -26,6 +27,7 @@ pub const REGISTRY: &[&dyn Study] = &[
     &piston::Piston,
     &pressure::Pressure,
     &expansion::Expansion,
+    &heat::Heat,
     &mixing::Mixing,
     &equilibrium::Equilibrium,
     &accuracy::Accuracy,

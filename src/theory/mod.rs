@@ -4,6 +4,8 @@ pub mod carnahan_starling;
 pub mod carnahan_starling_kolafa;
 pub mod disk_virial;
 pub mod expansion;
+pub mod heat;
+pub mod heat_free;
 pub mod henderson;
 pub mod maxwell;
 pub mod microcanonical;

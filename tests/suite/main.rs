@@ -15,6 +15,7 @@ mod engine_save;
 mod engine_thermal_walls;
 mod equilibrium_study;
 mod expansion_study;
+mod heat_study;
 mod layers;
 mod mixing_study;
 mod movie;
