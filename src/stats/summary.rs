@@ -106,6 +106,18 @@ impl Stats {
         Stats::from_moments(n, mean, ss, t_quantile(n.saturating_sub(1)))
     }
 
+    /// The statistics of the values times `factor` (> 0).
+    pub fn scaled(&self, factor: f64) -> Stats {
+        Stats {
+            n: self.n,
+            mean: self.mean * factor,
+            std: self.std * factor,
+            stderr: self.stderr * factor,
+            ci_low: self.ci_low * factor,
+            ci_high: self.ci_high * factor,
+        }
+    }
+
     /// From the count, the mean, the sum of squared deviations from it and
     /// the Student quantile for n - 1 degrees of freedom (given, so that a
     /// curve of many samples with one n computes it once).

@@ -17,7 +17,7 @@ use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs;
 use crate::theory::heat::{conductivity_dilute, enskog_factor};
 pub use conduct::{Line, Profile, centre_density};
 pub use gas::{Experiment, Gas};
@@ -139,11 +139,7 @@ impl Study for Heat {
             _ => None,
         }
     }
-    fn section(
-        &self,
-        d: &Descriptor,
-        runs: &[(RunSpec, RunOutput)],
-    ) -> anyhow::Result<ReportSection> {
+    fn section(&self, d: &Descriptor, runs: &Runs) -> anyhow::Result<ReportSection> {
         section::section(d, runs)
     }
 }

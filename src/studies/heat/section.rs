@@ -4,12 +4,13 @@
 //! wall (profiles, flux through each wall, jumps, conductivity beside
 //! Chapman-Enskog and Enskog).
 
-use super::{Experiment, Gas, Line, NAME, OPTIONS, Profile, RESULTS, model, passage, temperatures};
+use super::{Experiment, Gas, Line, NAME, OPTIONS, Profile, RESULTS, model, passage};
 use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::descriptor::Descriptor;
 use crate::model::report::{Figure, ReportSection};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs as AllRuns;
 use crate::stats::format::{count, num, pm};
 use crate::stats::summary::{Stats, z_score};
 use crate::studies::curves::mean_with_band;
@@ -56,10 +57,10 @@ fn label(spec: &RunSpec, gas: &Gas) -> String {
     }
 }
 
-pub fn section(d: &Descriptor, runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
+pub fn section(d: &Descriptor, runs: &AllRuns) -> anyhow::Result<ReportSection> {
     // Sweep points and cases are numbered apart; in plan order.
     let mut groups: BTreeMap<u64, Runs> = BTreeMap::new();
-    for r in runs {
+    for r in runs.iter() {
         groups.entry(r.0.point_id).or_default().push(r);
     }
     let mut relaxing = Vec::new();
@@ -81,7 +82,7 @@ pub fn section(d: &Descriptor, runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<
     let mut md = String::from(INTRO);
     let mut figures = Vec::new();
     if !relaxing.is_empty() {
-        md.push_str(&relaxation(&relaxing, &mut figures));
+        md.push_str(&relaxation(runs, &relaxing, &mut figures));
     }
     // Rods conduct anomalously: their own part.
     let (rods, balls): (Vec<_>, Vec<_>) = conducting.into_iter().partition(|p| p.0.dimension == 1);
@@ -100,32 +101,24 @@ pub fn section(d: &Descriptor, runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<
     })
 }
 
-/// Mean temperature curve over the runs (shared sample times; the shortest
-/// record ends it) and the mean start.
-fn mean_curve(gas: &Gas, rs: &Runs) -> (Vec<f64>, Vec<Stats>) {
-    let curves: Vec<(Vec<f64>, Vec<f64>)> = rs
-        .iter()
-        .filter_map(|r| r.1.series("kinetic_energy"))
-        .map(|s| (s.t.clone(), temperatures(gas, &s.value)))
-        .collect();
-    let Some(first) = curves.first() else {
+/// Mean temperature curve over a point's runs, from their kinetic energy
+/// means (T = 2K / (d N), the same for every run of the point).
+fn mean_curve(gas: &Gas, all: &AllRuns, point: u64) -> (Vec<f64>, Vec<Stats>) {
+    let Some((t, energy)) = all.mean(point, "kinetic_energy") else {
         return (Vec::new(), Vec::new());
     };
-    let len = curves.iter().map(|c| c.1.len()).min().unwrap_or(0);
-    let stats = (0..len)
-        .map(|i| Stats::of(&curves.iter().map(|c| c.1[i]).collect::<Vec<f64>>()))
-        .collect();
-    (first.0[..len].to_vec(), stats)
+    let per_energy = 2.0 / (gas.dimension as f64 * gas.particles);
+    (t, energy.iter().map(|s| s.scaled(per_energy)).collect())
 }
 
-fn relaxation(points: &[(Gas, f64, Runs)], figures: &mut Vec<Figure>) -> String {
+fn relaxation(all: &AllRuns, points: &[(Gas, f64, Runs)], figures: &mut Vec<Figure>) -> String {
     let mut md = String::from(RELAX_INTRO);
     let mut rows = String::new();
     let mut pictures = String::new();
     let mut ratio_bars = Vec::new();
     for (k, (gas, wall, rs)) in points.iter().enumerate() {
         let name = label(&rs[0].0, gas);
-        let (t, mean) = mean_curve(gas, rs);
+        let (t, mean) = mean_curve(gas, all, rs[0].0.point_id);
         let start = mean.first().map_or(f64::NAN, |s| s.mean);
         let m = model(gas, *wall, start);
         let curve: Vec<f64> = mean.iter().map(|s| s.mean).collect();
