@@ -545,6 +545,7 @@ pub fn describe_plan(loaded: &Loaded, specs: &[RunSpec], threads: usize) -> Stri
         d.study.replicas,
         specs.len()
     );
+    out += &crate::runner::error_bars::describe(specs);
     // One estimate per point (replicas differ only in their seeds), times its runs.
     let mut costs: Vec<(Option<RunCost>, f64)> = Vec::new();
     for (i, spec) in specs.iter().enumerate() {

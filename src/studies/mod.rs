@@ -6,6 +6,7 @@
 pub mod accuracy;
 pub mod curves;
 pub mod equilibrium;
+pub mod error_model;
 pub mod expansion;
 pub mod mixing;
 pub mod options;
@@ -19,6 +20,7 @@ use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::observe::Context;
 use crate::scene::Built;
+pub use error_model::ErrorModel;
 pub use options::StudyOption;
 
 /// Every study bonkers knows: one line each.
@@ -86,6 +88,11 @@ pub trait Study: Sync {
     fn theory(&self, _d: &Descriptor, _result: &str) -> Option<f64> {
         None
     }
+    /// The error model of its headline result at a descriptor (sweep
+    /// values applied), where it has one (`error_model.rs`).
+    fn error_model(&self, _d: &Descriptor) -> Option<ErrorModel> {
+        None
+    }
     /// Its part of the report, from the runs of the plan.
     fn section(
         &self,
@@ -129,6 +136,13 @@ pub fn theory(d: &Descriptor, result: &str) -> Option<f64> {
     named(d)
         .filter(|s| s.results().contains(&result))
         .find_map(|s| s.theory(d, result))
+}
+
+/// The error models of the named studies at a descriptor, by study name.
+pub fn error_models(d: &Descriptor) -> Vec<(&'static str, ErrorModel)> {
+    named(d)
+        .filter_map(|s| Some((s.name(), s.error_model(d)?)))
+        .collect()
 }
 
 /// The named studies' report sections, in descriptor order.

@@ -3,6 +3,7 @@
 //! give its excess energy to the gases; what share it keeps in the end.
 
 mod cases;
+mod error;
 mod estimators;
 mod pictures;
 mod points;
@@ -116,6 +117,9 @@ impl Study for Piston {
     }
     fn theory(&self, d: &Descriptor, result: &str) -> Option<f64> {
         theory(d, result)
+    }
+    fn error_model(&self, d: &Descriptor) -> Option<super::ErrorModel> {
+        error::error_model(d)
     }
     fn section(
         &self,
