@@ -217,7 +217,7 @@ fn one(study: &str, groups: &[&Length]) -> String {
     }
     let _ = writeln!(md, "\nModel ({}): {}.", first.name, first.model.basis);
     let lengths = series(groups);
-    if let Some(extra) = correlation(study, &lengths) {
+    if let Some(extra) = correlation(study, groups) {
         md.push_str(&extra);
     }
     md.push_str(&along_length(&lengths, first.model.length_exponent));
@@ -282,8 +282,8 @@ fn along_replicas(best: &Length) -> String {
     let mut k = 1;
     while let Some((se, groups)) = best.grouped(k) {
         let cost = k as f64 * best.cpu;
-        pts.push((cost, se));
         let u = scatter_uncertainty(groups);
+        pts.push((cost, se, u));
         let _ = writeln!(
             rows,
             "| {k} | {groups} | {} % | {} % | {} % | {} |",
@@ -303,15 +303,39 @@ fn along_replicas(best: &Length) -> String {
         best.name,
         num(best.duration)
     );
-    if let Some(p) = exponent(&pts).filter(|_| pts.len() > 2) {
+    if let Some((p, dp)) = weighted_slope(&pts) {
         let _ = writeln!(
             md,
-            "\nFitted against cost along replicas: exponent {} (independent replicas: −1/2; the last \
-             points rest on 4 to 8 group means each).",
-            num(p)
+            "\nFitted against cost along replicas (weighted by each point's uncertainty): exponent {} \
+             (independent replicas: −1/2; the groups share replicas, so the ± is a rough guide).",
+            pm(p, dp)
         );
     }
     md
+}
+
+/// Slope of ln(error) against ln(cost), each point weighted by 1/u² (u its
+/// relative uncertainty, the error of its logarithm), with the slope's
+/// standard error; None for fewer than three points.
+fn weighted_slope(pts: &[(f64, f64, f64)]) -> Option<(f64, f64)> {
+    if pts.len() < 3 || pts.iter().any(|p| !(p.0 > 0.0 && p.1 > 0.0 && p.2 > 0.0)) {
+        return None;
+    }
+    let w: Vec<f64> = pts.iter().map(|p| 1.0 / (p.2 * p.2)).collect();
+    let sw: f64 = w.iter().sum();
+    let mx = pts.iter().zip(&w).map(|(p, w)| w * p.0.ln()).sum::<f64>() / sw;
+    let my = pts.iter().zip(&w).map(|(p, w)| w * p.1.ln()).sum::<f64>() / sw;
+    let sxx: f64 = pts
+        .iter()
+        .zip(&w)
+        .map(|(p, w)| w * (p.0.ln() - mx).powi(2))
+        .sum();
+    let sxy: f64 = pts
+        .iter()
+        .zip(&w)
+        .map(|(p, w)| w * (p.0.ln() - mx) * (p.1.ln() - my))
+        .sum();
+    (sxx > 0.0).then(|| (sxy / sxx, (1.0 / sxx).sqrt()))
 }
 
 /// For X % error, the replicas and CPU seconds: measured σ₁ and the model's.
@@ -347,14 +371,15 @@ fn planning(best: &Length) -> String {
 
 /// The pressure's correlation time from the block analysis of each run,
 /// and what it does to the error: shown, not hidden.
-fn correlation(study: &str, lengths: &[&Length]) -> Option<String> {
+fn correlation(study: &str, groups: &[&Length]) -> Option<String> {
     if study != "pressure" {
         return None;
     }
     let mut md = String::from(
-        "\n| run length | block length (correlation time) | block error of one run, mean | replica scatter σ₁ (absolute) | ratio |\n|---|---|---|---|---|\n",
+        "\n| case | run length | block length chosen | block error of one run, mean | replica scatter σ₁ (absolute) | ratio |\n|---|---|---|---|---|---|\n",
     );
-    for l in lengths {
+    let mut single = true;
+    for l in groups {
         let get = |name: &str| -> Vec<f64> {
             l.runs
                 .iter()
@@ -365,9 +390,12 @@ fn correlation(study: &str, lengths: &[&Length]) -> Option<String> {
         let block = Stats::of(&get("Z_block_stderr"));
         let time = Stats::of(&get("block_time"));
         let sigma = l.stats().std;
+        let first = l.runs.iter().find_map(|o| spacing(o));
+        single &= time.std == 0.0 && first.is_some_and(|dt| (time.mean - dt).abs() < 1e-9 * dt);
         let _ = writeln!(
             md,
-            "| {} | {} | {} | {} | {} |",
+            "| {} | {} | {} | {} | {} | {} |",
+            l.name,
             num(l.duration),
             pm(time.mean, time.stderr),
             num(block.mean),
@@ -376,12 +404,27 @@ fn correlation(study: &str, lengths: &[&Length]) -> Option<String> {
         );
     }
     md.push_str(
-        "\nThe block analysis (Flyvbjerg–Petersen) within each run finds the blocks over which Z's samples \
-         decorrelate; its error bar for one run should match the scatter between runs (ratio ≈ 1) when the \
-         run outlasts the correlation time many times. The correlation factor c of the model is what \
-         correlations between collisions multiply the uncorrelated error by.\n",
+        "\nThe block analysis (Flyvbjerg–Petersen) within each run looks for the block length beyond which \
+         block means of Z's samples are uncorrelated: the pressure's correlation time, rounded up to a \
+         power of two samples. Its error bar for one run should match the scatter between runs (ratio ≈ 1). \
+         The model's c is what correlations between collisions multiply the uncorrelated error by.",
     );
+    md.push_str(if single {
+        " Here every run settled on blocks of a single sample: Z's samples are already uncorrelated at the \
+         sampling interval, so no correlation time makes the error worse at these densities, and c ≈ 1.\n"
+    } else {
+        " Where it chose longer blocks, the pressure stays correlated over them, and the error of a run is \
+         that much larger than its sample count suggests.\n"
+    });
     Some(md)
+}
+
+/// The sampling interval of a run's pressure series.
+fn spacing(o: &RunOutput) -> Option<f64> {
+    let s = o
+        .series("virial_pressure")
+        .or_else(|| o.series("wall_pressure"))?;
+    (s.t.len() > 1).then(|| s.t[1] - s.t[0])
 }
 
 fn chart(all: &[Length], names: &[&'static str]) -> ChartSpec {

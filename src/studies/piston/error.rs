@@ -37,7 +37,7 @@ pub fn error_model(d: &Descriptor) -> Option<ErrorModel> {
         Some(k) => k as f64,
         None => scene.species.iter().map(|s| s.count).sum::<usize>() as f64 / 2.0,
     };
-    if side < 1.0 || !(piston.mass > 0.0) {
+    if side < 1.0 || piston.mass.is_nan() || piston.mass <= 0.0 {
         return None;
     }
     let rows: Vec<f64> = SCATTER
