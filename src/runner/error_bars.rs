@@ -116,7 +116,8 @@ pub fn two_digits(x: f64) -> String {
     let exp = x.log10().floor() as i32;
     let scale = 10f64.powi(exp - 1);
     let rounded = (x / scale).round() * scale;
-    let decimals = (1 - exp).max(0) as usize;
+    // Rounding may carry into the next decade (9.96 -> 10).
+    let decimals = (1 - rounded.log10().floor() as i32).max(0) as usize;
     format!("{rounded:.decimals$}")
 }
 

@@ -90,6 +90,9 @@ pub fn log_interpolate(xs: &[f64], ys: &[f64], x: f64) -> f64 {
         return ys[n - 1];
     }
     let i = xs[..n].iter().rposition(|&a| a <= x).unwrap_or(0);
+    if xs[i] == x {
+        return ys[i];
+    }
     let w = (x / xs[i]).ln() / (xs[i + 1] / xs[i]).ln();
     (ys[i].ln() * (1.0 - w) + ys[i + 1].ln() * w).exp()
 }

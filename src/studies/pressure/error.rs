@@ -10,7 +10,9 @@
 //! Z − 1 = Γ σ sqrt(π m / kT) / (2d) with Γ = 2R/N the collisions per
 //! particle per unit time, gives R. Together, in units of σ, m and kT:
 //!
-//!     σ_Z = c sqrt(4 (Z − 1) / (sqrt(π) d N T))
+//! ```text
+//! σ_Z = c sqrt(4 (Z − 1) / (sqrt(π) d N T))
+//! ```
 //!
 //! where c = 1 for uncorrelated collisions. Correlated ones (a pair that
 //! meets again, collective momentum and density modes) would make c larger;
