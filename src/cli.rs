@@ -557,6 +557,7 @@ pub fn describe_plan(loaded: &Loaded, specs: &[RunSpec], threads: usize) -> Stri
         d.study.replicas,
         specs.len()
     );
+    out += &crate::runner::error_bars::describe(specs);
     // One estimate per point (replicas differ only in their seeds), times its runs.
     let costs = estimate::by_point(specs);
     let known: Vec<(RunCost, f64)> = costs

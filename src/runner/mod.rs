@@ -5,6 +5,7 @@ pub mod checkpoint;
 pub mod collect;
 pub mod confirm;
 pub mod cpu_time;
+pub mod error_bars;
 pub mod estimate;
 pub mod lock;
 pub mod manifest;

@@ -6,6 +6,7 @@
 pub mod accuracy;
 pub mod curves;
 pub mod equilibrium;
+pub mod error_model;
 pub mod expansion;
 pub mod heat;
 pub mod mixing;
@@ -20,6 +21,7 @@ use crate::model::run_output::RunOutput;
 use crate::observe::Context;
 use crate::scene::Built;
 use crate::stats::ensemble::Runs;
+pub use error_model::ErrorModel;
 pub use options::StudyOption;
 
 /// Every study bonkers knows: one line each.
@@ -88,6 +90,11 @@ pub trait Study: Sync {
     fn theory(&self, _d: &Descriptor, _result: &str) -> Option<f64> {
         None
     }
+    /// The error model of its headline result at a descriptor (sweep
+    /// values applied), where it has one (`error_model.rs`).
+    fn error_model(&self, _d: &Descriptor) -> Option<ErrorModel> {
+        None
+    }
     /// Its part of the report, from the successful runs of the plan: their
     /// scalars and histograms, each point's series means (`runs.mean`), and
     /// the series themselves only for the first `stats::ensemble::KEPT`
@@ -130,6 +137,13 @@ pub fn theory(d: &Descriptor, result: &str) -> Option<f64> {
     named(d)
         .filter(|s| s.results().contains(&result))
         .find_map(|s| s.theory(d, result))
+}
+
+/// The error models of the named studies at a descriptor, by study name.
+pub fn error_models(d: &Descriptor) -> Vec<(&'static str, ErrorModel)> {
+    named(d)
+        .filter_map(|s| Some((s.name(), s.error_model(d)?)))
+        .collect()
 }
 
 /// The named studies' report sections, in descriptor order.

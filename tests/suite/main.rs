@@ -3,6 +3,7 @@
 //! the README). Shared helpers are the modules without tests.
 
 mod accuracy_convergence;
+mod accuracy_effort;
 mod accuracy_stepper;
 mod accuracy_study;
 mod common;

@@ -47,7 +47,7 @@ pub fn scene_of(spec: &RunSpec) -> String {
 }
 
 /// Groups in the order their first run comes in the plan.
-pub fn groups(runs: &[(RunSpec, RunOutput)]) -> Vec<Group> {
+pub fn groups(runs: &[&(RunSpec, RunOutput)]) -> Vec<Group> {
     let mut keys: Vec<(String, Integrator, u64, u64)> = Vec::new();
     let key = |s: &RunSpec| {
         let dt = s.descriptor.run.dt.unwrap_or(f64::NAN);

@@ -13,7 +13,11 @@ use crate::stats::summary::Stats;
 use std::fmt::Write;
 
 pub fn section(runs: &[(RunSpec, RunOutput)]) -> ReportSection {
-    let all = groups(runs);
+    // The other studies' headline cases have a part of their own.
+    let (headline, own): (Vec<_>, Vec<_>) = runs
+        .iter()
+        .partition(|(s, _)| super::headlines::is_headline(s));
+    let all = groups(&own);
     let scenes: Vec<String> = all.iter().fold(Vec::new(), |mut v, g| {
         if !v.contains(&g.scene) {
             v.push(g.scene.clone());
@@ -45,6 +49,14 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> ReportSection {
         md.push_str(&table(scene, &all));
     }
     md.push_str(&super::effort::effort(&all, &scenes));
+    let (part, chart) = super::headlines::part(&headline);
+    md.push_str(&part);
+    if let Some(chart) = chart.filter(|c| !c.layers.is_empty()) {
+        figures.push(Figure {
+            file: "accuracy_effort.svg".into(),
+            chart,
+        });
+    }
     md.push_str(METHODS);
     ReportSection {
         title: "What accuracy costs in time: fixed step against exact events".into(),

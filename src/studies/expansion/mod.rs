@@ -3,6 +3,7 @@
 //! How fast does the split relax toward N/2, against particles that never
 //! collide; where does it settle and how much does it fluctuate there?
 
+mod error;
 mod measure;
 mod section;
 
@@ -95,6 +96,9 @@ impl Study for Expansion {
             }
             _ => None,
         }
+    }
+    fn error_model(&self, d: &Descriptor) -> Option<super::ErrorModel> {
+        error::error_model(d)
     }
     fn section(&self, _: &Descriptor, runs: &Runs) -> anyhow::Result<ReportSection> {
         section::section(runs)

@@ -7,6 +7,7 @@
 //! self-diffusion coefficient. docs/mixing.md defines both.
 
 mod disks;
+mod error;
 mod measure;
 mod rods;
 mod section;
@@ -87,6 +88,9 @@ impl Study for Mixing {
             "late_left_fraction" => Some(0.5),
             _ => None,
         }
+    }
+    fn error_model(&self, d: &Descriptor) -> Option<super::ErrorModel> {
+        error::error_model(d)
     }
     fn section(&self, _: &Descriptor, runs: &Runs) -> anyhow::Result<ReportSection> {
         section::section(runs)

@@ -3,6 +3,7 @@
 //! give its excess energy to the gases; what share it keeps in the end.
 
 mod cases;
+mod error;
 mod estimators;
 mod pictures;
 mod points;
@@ -117,6 +118,9 @@ impl Study for Piston {
     }
     fn theory(&self, d: &Descriptor, result: &str) -> Option<f64> {
         theory(d, result)
+    }
+    fn error_model(&self, d: &Descriptor) -> Option<super::ErrorModel> {
+        error::error_model(d)
     }
     fn section(&self, _: &Descriptor, runs: &Runs) -> anyhow::Result<ReportSection> {
         section(runs)

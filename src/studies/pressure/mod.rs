@@ -7,6 +7,7 @@ mod blocks;
 mod charts;
 mod equations;
 mod equilibration;
+mod error;
 mod finite_size;
 mod measure;
 mod packing;
@@ -97,6 +98,9 @@ impl Study for Pressure {
             return None;
         }
         Some((equations::of(dimension)[0].z)(eta))
+    }
+    fn error_model(&self, d: &Descriptor) -> Option<super::ErrorModel> {
+        error::error_model(d)
     }
     fn section(&self, _: &Descriptor, runs: &Runs) -> anyhow::Result<ReportSection> {
         section::section(runs)
