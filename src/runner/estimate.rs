@@ -83,8 +83,8 @@ struct Rates {
 }
 
 /// N z / 2 for the gas, with each particle's collision frequency z = rho
-/// <|v_rel|> in 1D (rho over the free length, Tonks), rho sigma <|v_rel|>
-/// g(sigma) for disks and rho pi sigma^2 <|v_rel|> g(sigma) for spheres, g
+/// <|v_rel|> in 1D (rho over the free length, Tonks), rho 2 sigma <|v_rel|>
+/// g(sigma) for disks (a disk sweeps a strip 2 sigma wide) and rho pi sigma^2 <|v_rel|> g(sigma) for spheres, g
 /// at contact from Henderson (2D) and Carnahan-Starling (3D); <|v_rel|> for
 /// the mean mass. The piston meets the gas on both faces, each of area A
 /// (1 in 1D) at the contact density rho g, with the flux of a Maxwellian
@@ -125,7 +125,7 @@ fn collision_rates(scene: &SceneSpec) -> Option<Rates> {
     };
     let z = match d {
         1 => rho * g * 2.0 * (kt / (PI * mass)).sqrt(),
-        2 => rho * sigma * (PI * kt / mass).sqrt() * g,
+        2 => 2.0 * rho * sigma * (PI * kt / mass).sqrt() * g,
         _ => rho * PI * sigma * sigma * (16.0 * kt / (PI * mass)).sqrt() * g,
     };
     let gas_rate = 0.5 * gas as f64 * z;
