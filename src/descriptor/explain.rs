@@ -137,7 +137,10 @@ fn humanize_types(raw: &str) -> String {
             "expected u64",
             "expected a whole number from 0 to 9223372036854775807",
         ),
-        ("expected u32", "expected a whole number from 0 to 4294967295"),
+        (
+            "expected u32",
+            "expected a whole number from 0 to 4294967295",
+        ),
         ("expected a sequence", "expected a list `[...]`"),
         ("expected a map", "expected a table"),
     ] {

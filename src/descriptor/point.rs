@@ -58,10 +58,7 @@ impl<'a> PointBase<'a> {
     }
 
     /// The descriptor with `settings` (key path, value) applied in order.
-    pub fn descriptor(
-        &self,
-        settings: &[(String, toml::Value)],
-    ) -> Result<Descriptor, PointError> {
+    pub fn descriptor(&self, settings: &[(String, toml::Value)]) -> Result<Descriptor, PointError> {
         let mut table = self.short.clone();
         // A setting at, inside or above a long list needs the list itself.
         let touched = |path: &[&str; 3]| {
@@ -148,7 +145,9 @@ fn copy_short(table: &toml::Table, long: &[usize]) -> toml::Table {
             .filter(|p| p[0] == key)
             .collect();
         let copy = match value {
-            toml::Value::Table(t) if !below.is_empty() => toml::Value::Table(copy_without(t, &below)),
+            toml::Value::Table(t) if !below.is_empty() => {
+                toml::Value::Table(copy_without(t, &below))
+            }
             _ => value.clone(),
         };
         short.insert(key.clone(), copy);
@@ -161,11 +160,7 @@ fn copy_short(table: &toml::Table, long: &[usize]) -> toml::Table {
 fn copy_without(table: &toml::Table, paths: &[&[&str; 3]]) -> toml::Table {
     let mut out = toml::Table::new();
     for (key, value) in table {
-        let lists: Vec<&str> = paths
-            .iter()
-            .filter(|p| p[1] == key)
-            .map(|p| p[2])
-            .collect();
+        let lists: Vec<&str> = paths.iter().filter(|p| p[1] == key).map(|p| p[2]).collect();
         let copy = match value {
             toml::Value::Table(inner) if !lists.is_empty() => {
                 let mut t = toml::Table::new();

@@ -5,9 +5,7 @@ use crate::model::descriptor::{Descriptor, Scale, SweepMode, SweepValues};
 use crate::model::scene::SceneSpec;
 use std::collections::HashSet;
 
-pub use crate::model::problem::{
-    Check, Problem, bad, compact, name_fits, non_negative, positive,
-};
+pub use crate::model::problem::{Check, Problem, bad, compact, name_fits, non_negative, positive};
 
 /// Top-level sections a sweep may set. `[study]` is not among them: replicas
 /// and seeds shape the plan itself, so they cannot vary within it.
@@ -126,8 +124,14 @@ pub fn run(d: &Descriptor) -> Check {
             None,
         );
     }
-    let times = [("run.duration", r.duration), ("run.equilibrate", Some(r.equilibrate))];
-    if let Some((key, Some(t))) = times.into_iter().find(|(_, t)| t.is_some_and(|t| t > MAX_TIME)) {
+    let times = [
+        ("run.duration", r.duration),
+        ("run.equilibrate", Some(r.equilibrate)),
+    ];
+    if let Some((key, Some(t))) = times
+        .into_iter()
+        .find(|(_, t)| t.is_some_and(|t| t > MAX_TIME))
+    {
         return bad(
             key,
             format!(
@@ -279,8 +283,13 @@ fn repeats(at: &str, values: &[toml::Value]) -> Check {
             };
             return bad(
                 at,
-                format!("value {}{same} is listed twice (items {j} and {i})", show(x)),
-                Some(&format!("remove the repeat: both points would run with {hint}")),
+                format!(
+                    "value {}{same} is listed twice (items {j} and {i})",
+                    show(x)
+                ),
+                Some(&format!(
+                    "remove the repeat: both points would run with {hint}"
+                )),
             );
         }
     }

@@ -22,9 +22,10 @@ pub const CONFIRM_CPU_SECONDS: f64 = 3.6e6;
 /// whose runs together take longer than `CONFIRM_CPU_SECONDS`.
 pub fn confirm_cost(loaded: &Loaded, specs: &[RunSpec], yes: bool) -> Result<(), DescriptorError> {
     let costs = estimate::by_point(specs);
-    let endless = costs
-        .iter()
-        .find_map(|(i, c, _)| c.filter(|c| !(c.collisions <= MAX_RUN_COLLISIONS)).map(|c| (*i, c)));
+    let endless = costs.iter().find_map(|(i, c, _)| {
+        c.filter(|c| !(c.collisions <= MAX_RUN_COLLISIONS))
+            .map(|c| (*i, c))
+    });
     if let Some((i, cost)) = endless {
         return Err(endless_run(loaded, &specs[i], cost));
     }

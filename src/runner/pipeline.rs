@@ -8,8 +8,8 @@ use crate::descriptor::sweep::{self, CONFIRM_ABOVE};
 use crate::files::write_atomic;
 use crate::model::run_spec::RunSpec;
 use crate::runner::checkpoint;
-pub use crate::runner::confirm::confirm_cost;
 use crate::runner::collect::{self, Collected, Invocation, RunCommand};
+pub use crate::runner::confirm::confirm_cost;
 use crate::runner::lock::OutLock;
 use crate::runner::origin::{self, Origin};
 use crate::runner::plan;
@@ -199,12 +199,11 @@ fn create_out_dir(out_dir: &Path) -> Result<Vec<PathBuf>, StudyError> {
     Ok(made)
 }
 
-/// Remove the folders `create_out_dir` made (deepest first), while empty.
+/// Remove the folders `create_out_dir` made (deepest first) that are empty
+/// (some may not have been made: `remove_dir` leaves anything else alone).
 fn unmake(made: &[PathBuf]) {
     for dir in made {
-        if std::fs::remove_dir(dir).is_err() {
-            break;
-        }
+        let _ = std::fs::remove_dir(dir);
     }
 }
 
@@ -213,7 +212,8 @@ fn unmake(made: &[PathBuf]) {
 /// leftovers may be another part's work in flight.
 fn claim_shared(out_dir: &Path, shard: Option<Shard>) -> Result<OutLock, StudyError> {
     let made = create_out_dir(out_dir)?;
-    Ok(OutLock::shared(out_dir, shard.map(|s| s.tag()).as_deref()).inspect_err(|_| unmake(&made))?)
+    Ok(OutLock::shared(out_dir, shard.map(|s| s.tag()).as_deref())
+        .inspect_err(|_| unmake(&made))?)
 }
 
 /// The `study run` command that runs (or resumes) the plan these flags make,

@@ -7,7 +7,7 @@
 use crate::descriptor::errors::DescriptorError;
 use crate::descriptor::load::{Loaded, show};
 use crate::descriptor::point::{PointBase, PointError};
-use crate::descriptor::sweep::{HARD_LIMIT, count, points, point_text};
+use crate::descriptor::sweep::{HARD_LIMIT, count, point_text, points};
 use crate::descriptor::validate;
 use crate::model::descriptor::Descriptor;
 use crate::model::run_spec::RunSpec;
@@ -63,12 +63,16 @@ pub fn plan(loaded: &Loaded) -> Result<Vec<RunSpec>, DescriptorError> {
         // 10 and 10.0 are one value: the same point, though not the same seeds.
         let repeat = match seen.insert(key, point_id) {
             Some(other) => Some((other, "seeds")),
-            None => same.insert(point_text(&params), point_id).map(|o| (o, "settings")),
+            None => same
+                .insert(point_text(&params), point_id)
+                .map(|o| (o, "settings")),
         };
         if let Some((other, what)) = repeat {
             return Err(fail(
                 format!("has the same values as point {other}"),
-                Some(format!("remove the repeat: both points would run with the same {what}")),
+                Some(format!(
+                    "remove the repeat: both points would run with the same {what}"
+                )),
             ));
         }
         let params = Arc::new(params);
@@ -107,7 +111,8 @@ fn cases(loaded: &Loaded, specs: &mut Vec<RunSpec>) -> Result<(), DescriptorErro
                     .key(&at);
             hint.into_iter().fold(err, DescriptorError::hint)
         };
-        validate::case(d, i, &mut named).map_err(|p| fail(format!("`{}`: {}", p.key, p.message), p.hint))?;
+        validate::case(d, i, &mut named)
+            .map_err(|p| fail(format!("`{}`: {}", p.key, p.message), p.hint))?;
         let settings: Vec<(String, toml::Value)> = case
             .set
             .iter()

@@ -218,7 +218,10 @@ pub fn find(name: &str) -> Option<SceneSpec> {
     static PARSED: std::sync::OnceLock<Vec<Option<SceneSpec>>> = std::sync::OnceLock::new();
     let parsed = PARSED.get_or_init(|| {
         // Bundled presets are tested to parse (see the tests below).
-        PRESETS.iter().map(|p| toml::from_str(p.toml).ok()).collect()
+        PRESETS
+            .iter()
+            .map(|p| toml::from_str(p.toml).ok())
+            .collect()
     });
     let i = PRESETS.iter().position(|p| p.name == name)?;
     parsed[i].clone()

@@ -15,6 +15,8 @@ mod engine_save;
 mod engine_thermal_walls;
 mod equilibrium_study;
 mod expansion_study;
+mod hostile_fuzz;
+mod hostile_input;
 mod layers;
 mod mixing_study;
 mod movie;

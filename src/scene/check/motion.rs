@@ -169,16 +169,19 @@ fn energy_fits(s: &SceneSpec) -> Check {
             ("scene.velocities.temperature", 0.5 * d * n * temperature)
         }
         // Each component's momentum up to p: energy up to d p^2 / (2 m).
-        Some(Velocities::Uniform { p, .. }) => (
-            "scene.velocities.p",
-            0.5 * d * n * (p * p) / lightest,
-        ),
+        Some(Velocities::Uniform { p, .. }) => {
+            ("scene.velocities.p", 0.5 * d * n * (p * p) / lightest)
+        }
         Some(Velocities::Equal { velocity }) => {
             let v2: f64 = velocity.iter().map(|v| v * v).sum();
-            ("scene.velocities.velocity", 0.5 * v2 * per_species(&heaviest))
+            (
+                "scene.velocities.velocity",
+                0.5 * v2 * per_species(&heaviest),
+            )
         }
         Some(Velocities::Explicit { velocities }) => {
-            let masses = (0..s.species.len()).flat_map(|i| std::iter::repeat_n(heaviest(i), count(s, i)));
+            let masses =
+                (0..s.species.len()).flat_map(|i| std::iter::repeat_n(heaviest(i), count(s, i)));
             let e = velocities
                 .iter()
                 .zip(masses)
