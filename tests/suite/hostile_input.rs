@@ -159,7 +159,7 @@ fn planning_is_linear_in_the_plan() {
 /// never finish is refused by its estimate, placed at what sets its length.
 #[test]
 fn numbers_that_cannot_stay_finite_or_finish_are_refused() {
-    let tens = vec!["[1e300]"; 10].join(", ");
+    let tens = ["[1e300]"; 10].join(", ");
     refused(&[
         case(
             "equal velocities of 1e200",
