@@ -200,12 +200,24 @@ pub fn from_owned_table(file: &str, table: toml::Table) -> Result<Descriptor, De
 
 /// A TOML value as the user would write it.
 pub fn show(value: &toml::Value) -> String {
+    // A message quotes at most this much of a value: long strings and lists
+    // are cut, saying how long they are.
+    const LONGEST: usize = 120;
+    let text = written(value);
+    if text.chars().count() <= LONGEST {
+        return text;
+    }
+    let start: String = text.chars().take(LONGEST - 20).collect();
+    format!("{start}… ({} characters)", text.chars().count())
+}
+
+fn written(value: &toml::Value) -> String {
     match value {
         toml::Value::String(s) => format!("{s:?}"),
         // `1e-300`, not three hundred digits (Rust's Debug form is valid TOML).
         toml::Value::Float(f) if f.is_finite() => format!("{f:?}"),
         toml::Value::Array(items) => {
-            let items: Vec<String> = items.iter().map(show).collect();
+            let items: Vec<String> = items.iter().map(written).collect();
             format!("[{}]", items.join(", "))
         }
         other => other.to_string(),

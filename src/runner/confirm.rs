@@ -23,7 +23,8 @@ pub const CONFIRM_CPU_SECONDS: f64 = 3.6e6;
 pub fn confirm_cost(loaded: &Loaded, specs: &[RunSpec], yes: bool) -> Result<(), DescriptorError> {
     let costs = estimate::by_point(specs);
     let endless = costs.iter().find_map(|(i, c, _)| {
-        c.filter(|c| !(c.collisions <= MAX_RUN_COLLISIONS))
+        // NaN counts as endless too.
+        c.filter(|c| c.collisions.is_nan() || c.collisions > MAX_RUN_COLLISIONS)
             .map(|c| (*i, c))
     });
     if let Some((i, cost)) = endless {

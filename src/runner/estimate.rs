@@ -70,12 +70,6 @@ pub fn by_point(specs: &[RunSpec]) -> Vec<(usize, Option<RunCost>, f64)> {
     costs
 }
 
-/// Pair collisions per unit time in a scene at its initial temperature
-/// (the piston's with the gas included); None without a box.
-pub fn collision_rate(scene: &SceneSpec) -> Option<f64> {
-    collision_rates(scene).map(|r| r.gas + r.piston)
-}
-
 /// Collisions per unit time: among the gas, and of the piston with the gas.
 struct Rates {
     gas: f64,

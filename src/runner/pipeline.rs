@@ -204,12 +204,11 @@ fn create_out_dir(out_dir: &Path) -> Result<Vec<PathBuf>, StudyError> {
     Ok(made)
 }
 
-/// Remove the folders `create_out_dir` made (deepest first), while empty.
+/// Remove the folders `create_out_dir` made (deepest first) that are empty
+/// (some may not have been made: `remove_dir` leaves anything else alone).
 fn unmake(made: &[PathBuf]) {
     for dir in made {
-        if std::fs::remove_dir(dir).is_err() {
-            break;
-        }
+        let _ = std::fs::remove_dir(dir);
     }
 }
 

@@ -17,6 +17,8 @@ mod engine_thermal_walls;
 mod equilibrium_study;
 mod expansion_study;
 mod heat_study;
+mod hostile_fuzz;
+mod hostile_input;
 mod layers;
 mod mixing_study;
 mod movie;
