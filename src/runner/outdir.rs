@@ -287,6 +287,26 @@ pub fn read_own_text(path: &Path, limit: u64) -> Result<String, Unusable> {
         .map_err(|_| Unusable::Refused(format!("{} is not UTF-8 text", path.display())))
 }
 
+/// Remove what an interrupted or killed run left in OUT: its staging
+/// folders and temporary files, by their exact names (a link of such a
+/// name is removed, never followed). Only call this holding OUT's lock.
+pub fn remove_leftovers(out: &Path) -> anyhow::Result<()> {
+    let entries =
+        std::fs::read_dir(out).with_context(|| format!("cannot list {}", out.display()))?;
+    for entry in entries.flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let path = entry.path();
+        let folder = entry.file_type().is_ok_and(|t| t.is_dir());
+        if is_staging(&name) && folder {
+            std::fs::remove_dir_all(&path)
+                .with_context(|| format!("cannot remove {}", path.display()))?;
+        } else if (is_staging(&name) || is_temporary(&name)) && !folder {
+            remove_if_present(&path)?;
+        }
+    }
+    Ok(())
+}
+
 /// Remove the file (or link) `path`, if there is one.
 pub fn remove_if_present(path: &Path) -> anyhow::Result<()> {
     match std::fs::remove_file(path) {

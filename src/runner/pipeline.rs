@@ -14,7 +14,6 @@ use crate::runner::origin::{self, Origin};
 use crate::runner::outdir;
 use crate::runner::plan;
 use crate::runner::progress::ProgressMode;
-use crate::runner::publish;
 use crate::runner::run::{self, RunnerOptions, RunnerReport, SimulateFn, Subset, run_subset};
 use crate::runner::shard::{self, Shard};
 use anyhow::Context;
@@ -115,18 +114,15 @@ struct Planned {
     path: PathBuf,
 }
 
-/// The plan of a `study run` with `options`, once its output folder is
-/// found fit to write into (`outdir::check`).
+/// The plan of a `study run` with `options`.
 fn plan_run(path: &Path, options: &StudyOptions) -> Result<Planned, StudyError> {
-    let planned = plan_study(
+    plan_study(
         path,
         options.replicas,
         options.quick,
         options.yes,
         options.out.as_ref(),
-    )?;
-    outdir::check(&planned.out_dir, options.force)?;
-    Ok(planned)
+    )
 }
 
 fn plan_study(
@@ -152,10 +148,8 @@ fn plan_study(
     })
 }
 
-/// The plan whose runs are in `out_dir`, from its `.study.json` (no links
-/// inside: `outdir::check`).
+/// The plan whose runs are in `out_dir`, from its `.study.json`.
 fn plan_folder(out_dir: &Path) -> Result<Planned, StudyError> {
-    outdir::check(out_dir, false)?;
     let origin = origin::load(out_dir)?;
     let loaded = origin.loaded()?;
     let specs = plan::plan(&loaded)?;
@@ -175,19 +169,22 @@ impl Planned {
     }
 }
 
-/// Create and lock the output folder, and remove what a killed invocation left.
-fn claim(out_dir: &Path) -> Result<OutLock, StudyError> {
+/// Check, create and lock the output folder, and remove what a killed
+/// invocation left.
+fn claim(out_dir: &Path, force: bool) -> Result<OutLock, StudyError> {
+    outdir::check(out_dir, force)?;
     std::fs::create_dir_all(out_dir)
         .with_context(|| format!("cannot create the output directory {}", out_dir.display()))?;
     let lock = OutLock::acquire(out_dir)?;
-    publish::remove_leftovers(out_dir)?;
+    outdir::remove_leftovers(out_dir)?;
     Ok(lock)
 }
 
 /// Create the output folder and lock it shared with other parts of the
 /// plan (`shard`: and that shard's own lock). Nothing is removed: the
 /// leftovers may be another part's work in flight.
-fn claim_shared(out_dir: &Path, shard: Option<Shard>) -> Result<OutLock, StudyError> {
+fn claim_shared(out_dir: &Path, shard: Option<Shard>, force: bool) -> Result<OutLock, StudyError> {
+    outdir::check(out_dir, force)?;
     std::fs::create_dir_all(out_dir)
         .with_context(|| format!("cannot create the output directory {}", out_dir.display()))?;
     Ok(OutLock::shared(out_dir, shard.map(|s| s.tag()).as_deref())?)
@@ -301,7 +298,7 @@ pub fn run_study(
     let started = SystemTime::now();
     let clock = Instant::now();
     let planned = plan_run(path, options)?;
-    let _lock = claim(&planned.out_dir)?;
+    let _lock = claim(&planned.out_dir, options.force)?;
     let (mut report, runs_wall_seconds) = compute(
         &planned,
         Subset::All,
@@ -348,7 +345,7 @@ pub fn run_part(
     stop: &AtomicBool,
 ) -> Result<RunnerReport, StudyError> {
     let planned = plan_run(path, options)?;
-    let _lock = claim(&planned.out_dir)?;
+    let _lock = claim(&planned.out_dir, options.force)?;
     let claim = Claim::Whole { keep: false };
     Ok(compute(&planned, subset, options, claim, simulate, stop)?.0)
 }
@@ -377,7 +374,7 @@ pub fn run_slice(
         Slice::Shard(s) => Some(*s),
         Slice::Runs(_) => None,
     };
-    let _lock = claim_shared(&planned.out_dir, shard)?;
+    let _lock = claim_shared(&planned.out_dir, shard, options.force)?;
     let report = match slice {
         Slice::Shard(s) => {
             let dealt = shard::deal(&shard::estimated_seconds(&planned.specs), s.count);
@@ -432,7 +429,7 @@ pub fn collect_folder(
         ran: 0,
         rerun: planned.rerun(),
     };
-    let _lock = claim(out_dir)?;
+    let _lock = claim(out_dir, false)?;
     for other in more {
         join_records(&planned, other)?;
     }
@@ -510,7 +507,6 @@ pub fn collect_study(path: &Path, options: &CollectOptions) -> Result<Collected,
         options.yes,
         options.out.as_ref(),
     )?;
-    outdir::check(&planned.out_dir, false)?;
     let invocation = Invocation {
         command_line: options.command_line.clone(),
         started,
@@ -521,7 +517,7 @@ pub fn collect_study(path: &Path, options: &CollectOptions) -> Result<Collected,
         rerun: planned.rerun(),
     };
     let _lock = if planned.out_dir.is_dir() {
-        Some(claim(&planned.out_dir)?)
+        Some(claim(&planned.out_dir, false)?)
     } else {
         None
     };

@@ -7,7 +7,7 @@
 //! plot beside a new report.
 
 use crate::files::{is_temporary, sync_dir};
-use crate::runner::outdir::{SMALL_LIMIT, is_staging};
+use crate::runner::outdir::SMALL_LIMIT;
 use anyhow::Context;
 use std::fs::File;
 use std::path::{Path, PathBuf};
@@ -92,26 +92,6 @@ impl Drop for Staging {
     fn drop(&mut self) {
         let _ = std::fs::remove_dir_all(&self.dir);
     }
-}
-
-/// Remove what an interrupted or killed run left in OUT: its staging
-/// folders and temporary files, by their exact names (a link of such a name
-/// is removed, never followed). Only call this holding OUT's lock.
-pub fn remove_leftovers(out: &Path) -> anyhow::Result<()> {
-    let entries =
-        std::fs::read_dir(out).with_context(|| format!("cannot list {}", out.display()))?;
-    for entry in entries.flatten() {
-        let name = entry.file_name().to_string_lossy().into_owned();
-        let path = entry.path();
-        let folder = entry.file_type().is_ok_and(|t| t.is_dir());
-        if is_staging(&name) && folder {
-            std::fs::remove_dir_all(&path)
-                .with_context(|| format!("cannot remove {}", path.display()))?;
-        } else if (is_staging(&name) || is_temporary(&name)) && !folder {
-            remove_if_present(&path)?;
-        }
-    }
-    Ok(())
 }
 
 /// The files the previous study published in OUT: as its manifest lists
