@@ -112,11 +112,11 @@ pub fn check(out: &Path, force: bool) -> Result<(), DescriptorError> {
             return Err(link(&path));
         }
         let folder = name == RUNS || name == SLURM;
-        if folder != meta.is_dir() {
+        if folder != meta.is_dir() || !(folder || meta.is_file()) {
             let what = if folder {
                 "is not a folder: bonkers keeps its own files there"
             } else {
-                "is not a file: bonkers keeps its own state there"
+                "is not a regular file: bonkers keeps its own state there"
             };
             return Err(refuse(&path, what).hint("move it away, or give another --out"));
         }

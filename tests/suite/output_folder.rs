@@ -190,7 +190,8 @@ fn links_where_bonkers_keeps_its_own_state_are_refused() {
     }
 }
 
-/// The locks themselves do not write through a link, whoever calls them.
+/// The locks themselves do not write through a link, whoever calls them,
+/// nor use a pipe.
 #[test]
 fn a_lock_file_that_is_a_link_is_not_written_through() {
     let dir = tempfile::tempdir().unwrap();
@@ -209,6 +210,23 @@ fn a_lock_file_that_is_a_link_is_not_written_through() {
         .to_string();
     assert!(err.contains(".shard-1-of-2.lock"), "{err}");
     assert_eq!(std::fs::read_to_string(&victim).unwrap(), "precious");
+
+    // Nor is a pipe used as a lock: refused, with exit 2 from a study.
+    let piped = dir.path().join("piped");
+    std::fs::create_dir(&piped).unwrap();
+    let lock = piped.join(".study.lock");
+    assert!(
+        Command::new("mkfifo")
+            .arg(&lock)
+            .status()
+            .unwrap()
+            .success()
+    );
+    assert!(OutLock::acquire(&piped).is_err());
+    let file = write_descriptor(dir.path(), PISTON);
+    let err = run_study(&file, &options(&piped), &fake, &AtomicBool::new(false)).unwrap_err();
+    assert_eq!(err.exit_code(), 2, "{err}");
+    assert!(err.to_string().contains("is not a regular file"), "{err}");
 }
 
 /// Item 5 and 9: links where bonkers replaces a file (records, checkpoints,
