@@ -348,6 +348,7 @@ fn names_at_the_limit_are_written() {
         yes: false,
         command_line: vec!["study".into(), "run".into()],
         checkpoint_every: None,
+        force: false,
     };
     let stop = AtomicBool::new(false);
     let outcome = pipeline::run_study(&file, &options, &bonkers::runner::simulate::run, &stop)
