@@ -13,6 +13,7 @@ pub mod piston;
 pub mod piston_equilibrium;
 pub mod piston_exchange;
 pub mod piston_room;
+pub mod self_diffusion;
 pub mod sphere_virial;
 pub mod tonks;
 pub mod virial_series;

@@ -3,7 +3,10 @@
 //! How fast does the split relax toward N/2, against particles that never
 //! collide; where does it settle and how much does it fluctuate there?
 
+mod charts;
+mod group;
 mod measure;
+mod profiles;
 mod section;
 
 use super::{Finished, Start, Study};
@@ -12,7 +15,7 @@ use crate::model::need::Need;
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
-pub use measure::{Gas, late, relaxation_time, temperature};
+pub use measure::{Draw, Gas, draw, late, relaxation_time};
 
 /// The series every run records for it.
 pub const SERIES: &[&str] = &["left_fraction"];
@@ -25,6 +28,9 @@ pub const RESULTS: &[&str] = &[
     "relaxation_time",
     "relaxation_time_free",
     "relaxation_ratio",
+    "diffusion_enskog",
+    "relaxation_time_diffusive",
+    "diffusion_measured",
     "late_mean",
     "late_variance_ratio",
     "compressibility",
@@ -61,10 +67,20 @@ impl Study for Expansion {
         let (t, f) = (&series.t, &series.value);
         let tau = relaxation_time(t, f);
         let (mean, variance) = late(t, f);
-        let free = temperature(run.descriptor)
-            .map(|kt| gas.free(kt).relaxation_time())
+        let start = draw(run.descriptor);
+        let free = start
+            .map(|d| gas.free(d).relaxation_time())
             .unwrap_or(f64::NAN);
+        let enskog = start.map_or(f64::NAN, |d| gas.diffusion_enskog(d));
         let n = gas.particles as f64;
+        // A run that records the mean-squared displacement (a case with a
+        // periodic y axis, the gas filling the box) measures D along y.
+        let measured = out
+            .series
+            .iter()
+            .filter(|s| s.observable.starts_with("msd.") && s.observable.ends_with(".y"))
+            .map(|s| crate::studies::mixing::diffusion(&s.t, &s.value).0)
+            .next();
         out.scalars.extend(
             [
                 ("particles", n),
@@ -73,6 +89,11 @@ impl Study for Expansion {
                 ("relaxation_time", tau),
                 ("relaxation_time_free", free),
                 ("relaxation_ratio", tau / free),
+                ("diffusion_enskog", enskog),
+                (
+                    "relaxation_time_diffusive",
+                    gas.diffusive(enskog).relaxation_time(),
+                ),
                 ("late_mean", mean),
                 // Independent particles: binomial, variance 1/(4N).
                 ("late_variance_ratio", variance * 4.0 * n),
@@ -81,6 +102,9 @@ impl Study for Expansion {
             ]
             .map(|(k, v)| (k.to_string(), v)),
         );
+        if let Some(d) = measured {
+            out.scalars.push(("diffusion_measured".into(), d));
+        }
         Ok(())
     }
     fn theory(&self, d: &Descriptor, result: &str) -> Option<f64> {
@@ -90,7 +114,7 @@ impl Study for Expansion {
             // The collisionless time: holds only while collisions are rare.
             "relaxation_ratio" => Some(1.0),
             "relaxation_time" => {
-                let free = Gas::of_descriptor(d)?.free(temperature(d)?);
+                let free = Gas::of_descriptor(d)?.free(draw(d)?);
                 Some(free.relaxation_time())
             }
             _ => None,

@@ -1,0 +1,149 @@
+//! The runs of one sweep point or case, with what the report needs of them:
+//! the scene as the theory sees it, how its velocities were drawn, per-run
+//! results as ensemble statistics and the ensemble-mean left fraction.
+
+use super::measure::{Draw, Gas, draw};
+use super::relaxation_time;
+use crate::model::run_output::RunOutput;
+use crate::model::run_spec::RunSpec;
+use crate::stats::format::num;
+use crate::stats::summary::Stats;
+use crate::theory::expansion::Mixture;
+use std::collections::BTreeMap;
+
+pub struct Group<'a> {
+    /// The case's name; None for a sweep point.
+    pub case: Option<String>,
+    pub outs: Vec<&'a RunOutput>,
+    pub gas: Option<Gas>,
+    pub draw: Option<Draw>,
+    /// Sample times and the ensemble's left fraction at each.
+    pub t: Vec<f64>,
+    pub mean: Vec<Stats>,
+}
+
+/// Runs grouped by sweep point (in order), then by case (in name order).
+pub fn groups(runs: &[(RunSpec, RunOutput)]) -> Vec<Group<'_>> {
+    let mut by: BTreeMap<(Option<String>, u64), Vec<&(RunSpec, RunOutput)>> = BTreeMap::new();
+    for r in runs {
+        let key = (r.0.case.clone(), r.0.point_id);
+        by.entry(key).or_default().push(r);
+    }
+    by.into_iter()
+        .map(|((case, _), rs)| {
+            let d = &rs[0].0.descriptor;
+            let outs: Vec<&RunOutput> = rs.iter().map(|r| &r.1).collect();
+            let (t, mean) = mean_curve(&outs);
+            Group {
+                case,
+                gas: Gas::of_descriptor(d),
+                draw: draw(d),
+                outs,
+                t,
+                mean,
+            }
+        })
+        .collect()
+}
+
+impl Group<'_> {
+    /// A per-run result over the runs that report it finite.
+    pub fn stat(&self, name: &str) -> Stats {
+        let v: Vec<f64> = self
+            .outs
+            .iter()
+            .filter_map(|o| o.scalar(name))
+            .filter(|v| v.is_finite())
+            .collect();
+        Stats::of(&v)
+    }
+
+    pub fn free(&self) -> Option<Mixture> {
+        Some(self.gas.as_ref()?.free(self.draw?))
+    }
+
+    pub fn tau_free(&self) -> f64 {
+        self.free().map_or(f64::NAN, |f| f.relaxation_time())
+    }
+
+    /// The first passage of the ensemble-mean curve.
+    pub fn tau_of_mean(&self) -> f64 {
+        let curve: Vec<f64> = self.mean.iter().map(|s| s.mean).collect();
+        relaxation_time(&self.t, &curve)
+    }
+
+    pub fn dimension(&self) -> usize {
+        self.gas.as_ref().map_or(0, |g| g.dimension)
+    }
+
+    pub fn particles(&self) -> f64 {
+        self.gas.as_ref().map_or(f64::NAN, |g| g.particles as f64)
+    }
+
+    pub fn radius(&self) -> f64 {
+        self.gas.as_ref().map_or(f64::NAN, |g| g.diameter / 2.0)
+    }
+
+    /// p_max of a uniform start (NaN for a Maxwellian one).
+    pub fn p_max(&self) -> f64 {
+        match self.draw {
+            Some(Draw::Uniform(p)) => p,
+            _ => f64::NAN,
+        }
+    }
+
+    /// "p_max = 2" or "kT = 1".
+    pub fn start_text(&self) -> String {
+        match self.draw {
+            Some(Draw::Uniform(p)) => format!("p_max = {}", num(p)),
+            Some(Draw::Maxwell(kt)) => format!("Maxwell kT = {}", num(kt)),
+            None => "other".into(),
+        }
+    }
+
+    pub fn label(&self) -> String {
+        let what = match self.dimension() {
+            1 => "rods",
+            3 => "spheres",
+            _ => "disks",
+        };
+        let case = self
+            .case
+            .as_ref()
+            .map(|c| format!("{c}: "))
+            .unwrap_or_default();
+        format!(
+            "{case}{} {what}, radius {}, {}",
+            self.particles(),
+            num(self.radius()),
+            self.start_text()
+        )
+    }
+
+    pub fn cpu_seconds(&self) -> f64 {
+        self.outs.iter().map(|o| o.cpu_seconds).sum()
+    }
+
+    pub fn collisions(&self) -> u64 {
+        self.outs.iter().map(|o| o.collisions).sum()
+    }
+}
+
+/// The ensemble mean of the left fraction at each sample time, its
+/// standard error over the runs and the number of runs (runs of one point
+/// share their sample times; a shorter record ends the curve).
+pub fn mean_curve(runs: &[&RunOutput]) -> (Vec<f64>, Vec<Stats>) {
+    let series: Vec<_> = runs
+        .iter()
+        .filter_map(|o| o.series("left_fraction"))
+        .collect();
+    let Some(first) = series.first() else {
+        return (Vec::new(), Vec::new());
+    };
+    let len = series.iter().map(|s| s.value.len()).min().unwrap_or(0);
+    let t = first.t[..len].to_vec();
+    let stats = (0..len)
+        .map(|i| Stats::of(&series.iter().map(|s| s.value[i]).collect::<Vec<f64>>()))
+        .collect();
+    (t, stats)
+}

@@ -1,0 +1,181 @@
+//! Density and temperature along x during the expansion, ensemble means of
+//! the `temperature_x` slabs at a few multiples of the collisionless
+//! relaxation time, beside the local adiabat: a fluid in local equilibrium
+//! expanding without exchanging heat keeps T / n^(2/d) at its start value
+//! (ideal gas, gamma = (d + 2) / d), so it cools where it has thinned. A
+//! collisionless gas cools by sorting instead: the fast particles leave,
+//! and the slow ones left behind are "cold" about their slab's mean.
+
+use super::group::Group;
+use crate::model::chart::{ChartSpec, Layer, colour};
+use crate::model::report::Figure;
+use crate::stats::format::num;
+use std::fmt::Write;
+
+/// The times shown, in collisionless relaxation times.
+const TIMES: [f64; 5] = [0.0, 0.5, 1.0, 2.0, 4.0];
+
+/// One time's profile: slab centres, density over the final mean density,
+/// kT over the start's, and the adiabat's kT at each slab's density.
+struct Profile {
+    t: f64,
+    x: Vec<f64>,
+    density: Vec<f64>,
+    temperature: Vec<f64>,
+    adiabat: Vec<f64>,
+    /// Share of the kinetic energy not in the slabs' flow.
+    thermal_share: f64,
+}
+
+/// Figures and markdown for a case that recorded `temperature_x`; None
+/// when it did not (or has no theory to scale time by).
+pub fn section(g: &Group, name: &str) -> Option<(Vec<Figure>, String)> {
+    let gas = g.gas.as_ref()?;
+    let kt0 = gas.temperature(g.draw?);
+    let tau = g.tau_free();
+    let first = g.outs.first()?.series("count_x.0")?;
+    let slabs = (0..)
+        .take_while(|b| g.outs[0].series(&format!("count_x.{b}")).is_some())
+        .count();
+    let d = gas.dimension as f64;
+    let width = gas.length / slabs as f64;
+    let slab_volume = gas.volume() / slabs as f64;
+    let mut profiles = Vec::new();
+    for k in TIMES {
+        let want = k * tau;
+        let i = first
+            .t
+            .iter()
+            .position(|&t| t >= want - 1e-9)
+            .unwrap_or(first.t.len() - 1);
+        let mut density = Vec::new();
+        let mut temperature = Vec::new();
+        let mut adiabat = Vec::new();
+        let (mut thermal, mut total) = (0.0, 0.0);
+        for b in 0..slabs {
+            let (mut count, mut weight, mut sum) = (0.0, 0.0, 0.0);
+            for o in &g.outs {
+                let c = o.series(&format!("count_x.{b}"))?.value[i];
+                let kt = o.series(&format!("temperature_x.{b}"))?.value[i];
+                count += c;
+                // Pooled over runs: each slab's kT has c - 1 particles' worth.
+                if kt.is_finite() {
+                    weight += c - 1.0;
+                    sum += (c - 1.0) * kt;
+                }
+            }
+            let runs = g.outs.len() as f64;
+            let rel = count / runs / slab_volume / gas.density;
+            let kt = if weight > 0.0 { sum / weight } else { f64::NAN };
+            density.push(rel);
+            temperature.push(kt / kt0);
+            // The start had density 2 n in the left half.
+            adiabat.push((rel / 2.0).powf(2.0 / d));
+            if kt.is_finite() {
+                thermal += weight * kt;
+            }
+            total += count;
+        }
+        profiles.push(Profile {
+            t: first.t[i],
+            x: (0..slabs).map(|b| (b as f64 + 0.5) * width).collect(),
+            density,
+            temperature,
+            adiabat,
+            // d kT per particle's internal motion over d kT0 per particle.
+            thermal_share: thermal / (total * kt0),
+        });
+    }
+    let density = chart(
+        &profiles,
+        |p| &p.density,
+        None,
+        format!("Density along x during the expansion, {}", g.label()),
+        "density n(x) / n̄ (n̄ of the gas filling the box)",
+    );
+    let temperature = chart(
+        &profiles,
+        |p| &p.temperature,
+        Some(|p: &Profile| &p.adiabat),
+        format!("Temperature along x during the expansion, {}", g.label()),
+        "kT(x) / kT₀, about the slab's flow (dashed: adiabat (n/2n̄)^(2/d))",
+    );
+    let (fd, ft) = (
+        format!("expansion_density_{name}.svg"),
+        format!("expansion_temperature_{name}.svg"),
+    );
+    let mut md = String::new();
+    let _ = writeln!(
+        md,
+        "![{0}: ensemble-mean density in 16 slabs along x at t = {1} τ free.]({fd})\n\n\
+         ![{0}: ensemble-mean kT about each slab's flow, pooled over {2} runs, with the local adiabat (dashed).]({ft})\n",
+        g.label(),
+        TIMES.map(num).join(", "),
+        g.outs.len()
+    );
+    md.push_str("| t | t / τ free | kT/kT₀ of the slab just left of the middle | its adiabat | slab just right of the middle | its adiabat | kinetic energy about the slabs' flow / total |\n|---|---|---|---|---|---|---|\n");
+    let (l, r) = (slabs / 2 - 1, slabs / 2);
+    for p in &profiles {
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | {} | {} | {} |",
+            num(p.t),
+            num(p.t / tau),
+            num(p.temperature[l]),
+            num(p.adiabat[l]),
+            num(p.temperature[r]),
+            num(p.adiabat[r]),
+            num(p.thermal_share)
+        );
+    }
+    md.push('\n');
+    Some((
+        vec![
+            Figure {
+                file: fd,
+                chart: density,
+            },
+            Figure {
+                file: ft,
+                chart: temperature,
+            },
+        ],
+        md,
+    ))
+}
+
+fn chart(
+    profiles: &[Profile],
+    value: impl Fn(&Profile) -> &Vec<f64>,
+    theory: Option<fn(&Profile) -> &Vec<f64>>,
+    title: String,
+    y_label: &str,
+) -> ChartSpec {
+    let mut layers = Vec::new();
+    for (i, p) in profiles.iter().enumerate() {
+        layers.push(Layer::Line {
+            points: p.x.iter().copied().zip(value(p).iter().copied()).collect(),
+            paint: colour(i),
+            width: 2,
+            dashed: false,
+            label: Some(format!("t = {}", num(p.t))),
+        });
+        if let Some(f) = theory {
+            layers.push(Layer::Line {
+                points: p.x.iter().copied().zip(f(p).iter().copied()).collect(),
+                paint: colour(i).faded(0.7),
+                width: 1,
+                dashed: true,
+                label: None,
+            });
+        }
+    }
+    ChartSpec {
+        title,
+        x_label: "x [σ]".into(),
+        y_label: y_label.into(),
+        x_log: false,
+        y_log: false,
+        layers,
+    }
+}
