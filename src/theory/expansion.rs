@@ -143,11 +143,16 @@ impl FreeExpansion {
     /// sum stops after `MODES` of them (for tests; `by_images` is exact).
     pub fn by_modes(&self, t: f64) -> f64 {
         let st = self.speeds.scale() * t.abs();
-        let damping = |k: f64| match self.speeds {
-            Speeds::Maxwell(_) => (-0.5 * (k * st).powi(2)).exp(),
-            Speeds::Uniform(_) => sinc(k * st),
-        };
-        modes(self.length, self.start, &damping)
+        match self.speeds {
+            Speeds::Maxwell(_) => {
+                let damping = |k: f64| (-0.5 * (k * st).powi(2)).exp();
+                modes(self.length, self.start, &damping, &damping)
+            }
+            // sinc has zeros: stop on its envelope 1 / (k w t), not on it.
+            Speeds::Uniform(_) => modes(self.length, self.start, &|k| sinc(k * st), &|k| {
+                (1.0 / (k * st)).min(1.0)
+            }),
+        }
     }
 
     /// First time the excess over 1/2 falls to 1/e of its start (1/2),
@@ -187,13 +192,14 @@ impl Diffusive {
             return 1.0;
         }
         let dt = self.diffusion * t;
-        modes(self.length, self.start, &|k| (-dt * k * k).exp())
+        let damping = |k: f64| (-dt * k * k).exp();
+        modes(self.length, self.start, &damping, &damping)
     }
 
     /// The first passage of the excess to 1/e of its start; about 0.8
     /// L^2 / (pi^2 D) (the slowest mode's time).
     pub fn relaxation_time(&self) -> f64 {
-        if !(self.diffusion > 0.0) {
+        if self.diffusion.is_nan() || self.diffusion <= 0.0 {
             return f64::NAN;
         }
         first_below(
@@ -205,18 +211,19 @@ impl Diffusive {
 }
 
 /// Modes of the odd part of the left-half indicator averaged over the
-/// start, each damped by `damping(k)`, until they add less than round-off.
+/// start, each damped by `damping(k)`, until `bound(k)` (a decreasing bound
+/// on |damping| from k on) says they add less than round-off, or `MODES`.
 const MODES: u64 = 2_000_000;
 
-fn modes(l: f64, c: f64, damping: &dyn Fn(f64) -> f64) -> f64 {
+fn modes(l: f64, c: f64, damping: &dyn Fn(f64) -> f64, bound: &dyn Fn(f64) -> f64) -> f64 {
     let mut sum = 0.5;
     let mut n = 1u64;
     loop {
         let k = n as f64 * PI / l;
-        let d = damping(k);
-        if d.abs() < 1e-18 || n > MODES {
+        if bound(k) < 1e-18 || n > MODES {
             return sum;
         }
+        let d = damping(k);
         let sign = if n % 4 == 1 { 1.0 } else { -1.0 };
         sum += sign * 2.0 / (n as f64 * PI) * sinc(k * c) * d;
         n += 2;

@@ -1,5 +1,6 @@
 //! Theory predictions, one file each, set beside measurements in the summary.
 
+pub mod adiabat;
 pub mod carnahan_starling;
 pub mod carnahan_starling_kolafa;
 pub mod disk_virial;

@@ -22,9 +22,12 @@ pub struct Group<'a> {
     pub mean: Vec<Stats>,
 }
 
+/// A sweep point's or case's runs, keyed by (case, point).
+type ByPoint<'a> = BTreeMap<(Option<String>, u64), Vec<&'a (RunSpec, RunOutput)>>;
+
 /// Runs grouped by sweep point (in order), then by case (in name order).
 pub fn groups(runs: &[(RunSpec, RunOutput)]) -> Vec<Group<'_>> {
-    let mut by: BTreeMap<(Option<String>, u64), Vec<&(RunSpec, RunOutput)>> = BTreeMap::new();
+    let mut by: ByPoint = BTreeMap::new();
     for r in runs {
         let key = (r.0.case.clone(), r.0.point_id);
         by.entry(key).or_default().push(r);

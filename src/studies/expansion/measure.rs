@@ -147,7 +147,12 @@ impl Gas {
             kinds: self
                 .kinds
                 .iter()
-                .map(|&(r, m, c)| (FreeExpansion::with(self.length, r, draw.speeds(m)), c as f64))
+                .map(|&(r, m, c)| {
+                    (
+                        FreeExpansion::with(self.length, r, draw.speeds(m)),
+                        c as f64,
+                    )
+                })
                 .collect(),
         }
     }
@@ -217,7 +222,9 @@ pub fn draw(d: &Descriptor) -> Option<Draw> {
             energy: None,
             ..
         }) => Some(Draw::Maxwell(temperature)),
-        Some(Velocities::Uniform { p, energy: None, .. }) => Some(Draw::Uniform(p)),
+        Some(Velocities::Uniform {
+            p, energy: None, ..
+        }) => Some(Draw::Uniform(p)),
         Some(_) => None,
     }
 }

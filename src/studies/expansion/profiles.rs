@@ -1,15 +1,16 @@
 //! Density and temperature along x during the expansion, ensemble means of
 //! the `temperature_x` slabs at a few multiples of the collisionless
-//! relaxation time, beside the local adiabat: a fluid in local equilibrium
-//! expanding without exchanging heat keeps T / n^(2/d) at its start value
-//! (ideal gas, gamma = (d + 2) / d), so it cools where it has thinned. A
-//! collisionless gas cools by sorting instead: the fast particles leave,
-//! and the slow ones left behind are "cold" about their slab's mean.
+//! relaxation time, beside the local adiabat (`theory::adiabat`): a fluid
+//! in local equilibrium expanding without exchanging heat cools where it
+//! has thinned, as n^(2/d) if ideal and more if dense. A collisionless gas
+//! cools by sorting instead: the fast particles leave, and the slow ones
+//! left behind are "cold" about their slab's mean.
 
 use super::group::Group;
 use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::report::Figure;
 use crate::stats::format::num;
+use crate::theory::adiabat::temperature_ratio;
 use std::fmt::Write;
 
 /// The times shown, in collisionless relaxation times.
@@ -23,6 +24,8 @@ struct Profile {
     density: Vec<f64>,
     temperature: Vec<f64>,
     adiabat: Vec<f64>,
+    /// The ideal gas's adiabat.
+    ideal: Vec<f64>,
     /// Share of the kinetic energy not in the slabs' flow.
     thermal_share: f64,
 }
@@ -51,6 +54,7 @@ pub fn section(g: &Group, name: &str) -> Option<(Vec<Figure>, String)> {
         let mut density = Vec::new();
         let mut temperature = Vec::new();
         let mut adiabat = Vec::new();
+        let mut ideal = Vec::new();
         let (mut thermal, mut total) = (0.0, 0.0);
         for b in 0..slabs {
             let (mut count, mut weight, mut sum) = (0.0, 0.0, 0.0);
@@ -70,7 +74,9 @@ pub fn section(g: &Group, name: &str) -> Option<(Vec<Figure>, String)> {
             density.push(rel);
             temperature.push(kt / kt0);
             // The start had density 2 n in the left half.
-            adiabat.push((rel / 2.0).powf(2.0 / d));
+            let eta = gas.packing;
+            adiabat.push(temperature_ratio(gas.dimension, 2.0 * eta, rel * eta));
+            ideal.push((rel / 2.0).powf(2.0 / d));
             if kt.is_finite() {
                 thermal += weight * kt;
             }
@@ -82,6 +88,7 @@ pub fn section(g: &Group, name: &str) -> Option<(Vec<Figure>, String)> {
             density,
             temperature,
             adiabat,
+            ideal,
             // d kT per particle's internal motion over d kT0 per particle.
             thermal_share: thermal / (total * kt0),
         });
@@ -98,7 +105,7 @@ pub fn section(g: &Group, name: &str) -> Option<(Vec<Figure>, String)> {
         |p| &p.temperature,
         Some(|p: &Profile| &p.adiabat),
         format!("Temperature along x during the expansion, {}", g.label()),
-        "kT(x) / kT₀, about the slab's flow (dashed: adiabat (n/2n̄)^(2/d))",
+        "kT(x) / kT₀ about the slab's flow (dashed: the hard-particle adiabat)",
     );
     let (fd, ft) = (
         format!("expansion_density_{name}.svg"),
@@ -108,25 +115,29 @@ pub fn section(g: &Group, name: &str) -> Option<(Vec<Figure>, String)> {
     let _ = writeln!(
         md,
         "![{0}: ensemble-mean density in 16 slabs along x at t = {1} τ free.]({fd})\n\n\
-         ![{0}: ensemble-mean kT about each slab's flow, pooled over {2} runs, with the local adiabat (dashed).]({ft})\n",
+         ![{0}: ensemble-mean kT about each slab's flow, pooled over {2} runs, with the hard-particle fluid's adiabat at each slab's density (dashed).]({ft})\n",
         g.label(),
         TIMES.map(num).join(", "),
         g.outs.len()
     );
-    md.push_str("| t | t / τ free | kT/kT₀ of the slab just left of the middle | its adiabat | slab just right of the middle | its adiabat | kinetic energy about the slabs' flow / total |\n|---|---|---|---|---|---|---|\n");
+    md.push_str(
+        "| t | t / τ free | left of the middle: n/n̄ | kT/kT₀ | adiabat | ideal adiabat | right of the middle: n/n̄ | kT/kT₀ | adiabat | ideal adiabat | kinetic energy about the slabs' flow / total |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|\n",
+    );
     let (l, r) = (slabs / 2 - 1, slabs / 2);
     for p in &profiles {
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {} | {} | {} | {} |",
-            num(p.t),
-            num(p.t / tau),
-            num(p.temperature[l]),
-            num(p.adiabat[l]),
-            num(p.temperature[r]),
-            num(p.adiabat[r]),
-            num(p.thermal_share)
-        );
+        let _ = write!(md, "| {} | {} |", num(p.t), num(p.t / tau));
+        for b in [l, r] {
+            let _ = write!(
+                md,
+                " {} | {} | {} | {} |",
+                num(p.density[b]),
+                num(p.temperature[b]),
+                num(p.adiabat[b]),
+                num(p.ideal[b])
+            );
+        }
+        let _ = writeln!(md, " {} |", num(p.thermal_share));
     }
     md.push('\n');
     Some((

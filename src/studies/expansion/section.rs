@@ -117,7 +117,9 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
         let measured = g.stat("diffusion_measured");
         let enskog = g.stat("diffusion_enskog").mean;
         let gas = g.gas.as_ref();
-        let tau_d = gas.map_or(f64::NAN, |gas| gas.diffusive(measured.mean).relaxation_time());
+        let tau_d = gas.map_or(f64::NAN, |gas| {
+            gas.diffusive(measured.mean).relaxation_time()
+        });
         if let Some(gas) = gas {
             let scale = g.p_max() / (gas.kinds[0].1 * gas.length);
             measured_point = Some((gas.knudsen(), tau_d * scale));
@@ -125,7 +127,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
         let _ = writeln!(
             md,
             "**Diffusion coefficient** (case `{}`: {}, filling the box, y periodic): measured from the \
-             mean-squared displacement along y, D = {} σ √(kT₀/m) over {} runs; Enskog's \
+             mean-squared displacement along y, D = {} σ² per unit time over {} runs; Enskog's \
              (kinetic theory at the final density and kT = p_max²/3m) {}, ratio {}. The diffusive \
              relaxation time with the measured D is {} (Enskog's: {}); the measured one, at the same \
              gas in the left half (the sweep, same N, radius and p_max), is in the table.\n",
@@ -163,9 +165,10 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
         for (label, gs) in &gases {
             let (a, se) = exponent(gs);
             let g = gs[0];
-            let scale = g.gas.as_ref().map_or(f64::NAN, |gas| {
-                g.p_max() / (gas.kinds[0].1 * gas.length)
-            });
+            let scale = g
+                .gas
+                .as_ref()
+                .map_or(f64::NAN, |gas| g.p_max() / (gas.kinds[0].1 * gas.length));
             let _ = writeln!(
                 md,
                 "| {label} | {} | {} | {} | {} | {} | {} |",
@@ -342,7 +345,8 @@ error over the runs (the summary's z). Both need the last half of the run to lie
 sloshing to have died out.\n\n\
 **Profiles** (`temperature_x`): in 16 slabs along x at each sample, the number of particles and kT of their \
 motion about the slab's mean velocity; the ensemble mean of the count, and kT pooled over the runs with \
-weights n − 1. Dashed: the adiabat of an ideal gas in local equilibrium, kT/kT₀ = (n/n₀)^(2/d), n₀ = 2n̄ the \
-starting density. The last column is the kinetic energy of the motion about the slabs' mean velocities \
+weights n − 1. Dashed: the adiabat of the hard-particle fluid in local equilibrium from the start (packing \
+fraction 2η̄) to each slab's density, kT/kT₀ = (n/n₀)^(2/d) exp((2/d)(F(η) − F(η₀))), F(η) = ∫(Z − 1)/η dη \
+from the equation of state; the table adds the ideal gas's (n/n₀)^(2/d). The last column is the kinetic energy of the motion about the slabs' mean velocities \
 over the total: below 1 when the gas flows (at t = 0 by about slabs/N, each slab's own centre-of-mass \
 motion).\n";
