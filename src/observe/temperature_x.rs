@@ -21,7 +21,7 @@ impl Observable for TemperatureX {
         name: "temperature_x",
         kind: Kind::Series,
         writes: "<count|temperature>_x.<slab>",
-        label: "<number of particles|kT> in slab <slab> of 16 along x",
+        label: "<count|temperature> in slab <slab> of 16 along x",
         unit: "1 or kT",
         needs: &[Need::Sampling],
         doc: "number of movable particles and their kT about the slab's mean velocity in each of 16 equal slabs along x (slab 0 at x = 0), at each sample",

@@ -281,3 +281,34 @@ fn slab_temperatures_of_a_gas_at_rest_are_its_temperature() {
     eprintln!("pooled slab kT = {} +- {}", s.mean, s.stderr);
     assert!((s.mean - 1.0).abs() <= 4.0 * s.stderr);
 }
+
+/// The bundled study and its quick form plan; the collisionless theory
+/// covers every run (uniform and Maxwellian starts, 1D, 2D, 3D); the movie
+/// films the densest gas at p_max = 1.
+#[test]
+fn bundled_descriptor_plans() {
+    use bonkers::descriptor::load::{parse, quick};
+    use bonkers::runner::plan::plan;
+    let text = std::fs::read_to_string("studies/expansion.toml").unwrap();
+    let loaded = parse("studies/expansion.toml", &text).expect("valid");
+    let fast = quick(&loaded).expect("quick");
+    for (loaded, runs) in [(&loaded, 24 * 12 + 5 * 12 + 2 * 48 + 6), (&fast, 104)] {
+        let planned = plan(loaded).expect("plan");
+        assert_eq!(planned.len(), runs);
+        for r in &planned {
+            let tau = bonkers::studies::theory(&r.descriptor, "relaxation_time");
+            assert!(tau.is_some_and(|t| t > 0.0), "run {}: {tau:?}", r.run_id);
+        }
+        let movie = loaded.descriptor.observe.movie.as_ref().expect("movie").run;
+        let filmed = &planned[movie as usize];
+        let gas = Gas::of_descriptor(&filmed.descriptor).unwrap();
+        assert_eq!(
+            (gas.particles, gas.diameter),
+            (if runs == 104 { 200 } else { 400 }, 1.0)
+        );
+        assert_eq!(
+            bonkers::studies::expansion::draw(&filmed.descriptor),
+            Some(Draw::Uniform(1.0))
+        );
+    }
+}

@@ -44,7 +44,7 @@ impl Study for Expansion {
         "expansion"
     }
     fn about(&self) -> &'static str {
-        "a gas started in the left half spreads into the right: relaxation time of the left fraction against free particles bouncing between walls, late split and its fluctuations against the binomial"
+        "a gas started in the left half spreads into the right: relaxation time of the left fraction against p_max, density and N, beside the exact collisionless prediction (uniform or Maxwellian start) and the diffusive one (Enskog D); profiles of density and temperature; the late split against the binomial"
     }
     fn needs(&self) -> &'static [Need] {
         &[Need::Sampling, Need::Walls]
