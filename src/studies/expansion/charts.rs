@@ -11,6 +11,7 @@ pub const SHOWN: f64 = 8.0;
 /// Paints of the two theories, after the measured curves' colours.
 const FREE: usize = 6;
 const DIFFUSIVE: usize = 7;
+const THERMAL: usize = 5;
 
 /// One gas (N, radius) at several p_max, against t p_max / m: hard
 /// particles have no energy scale, so the curves of one gas coincide on
@@ -41,6 +42,14 @@ pub fn scaled(gas: &[&Group], title: &str) -> ChartSpec {
             |x| free.left_fraction(at(x)),
             FREE,
             "collisionless",
+        ));
+    }
+    if let Some(thermal) = first.free_thermal() {
+        layers.push(theory(
+            &grid,
+            |x| thermal.left_fraction(at(x)),
+            THERMAL,
+            "collisionless, Maxwellian at the same kT",
         ));
     }
     if let Some(g) = &first.gas {

@@ -65,6 +65,18 @@ impl Group<'_> {
         Some(self.gas.as_ref()?.free(self.draw?))
     }
 
+    /// Free particles with Maxwellian velocities at the start's kT: where
+    /// collisions have made the velocities Maxwellian without yet changing
+    /// the flight, a non-Maxwellian start tends to this curve (None for a
+    /// Maxwellian start, whose own curve it is).
+    pub fn free_thermal(&self) -> Option<Mixture> {
+        let gas = self.gas.as_ref()?;
+        match self.draw? {
+            Draw::Maxwell(_) => None,
+            d => Some(gas.free(Draw::Maxwell(gas.temperature(d)))),
+        }
+    }
+
     pub fn tau_free(&self) -> f64 {
         self.free().map_or(f64::NAN, |f| f.relaxation_time())
     }

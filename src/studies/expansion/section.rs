@@ -14,6 +14,7 @@ use crate::model::run_spec::RunSpec;
 use crate::stats::format::{count, num, pm};
 use crate::stats::summary::Stats;
 use crate::studies::mixing::line;
+use crate::theory::expansion::Mixture;
 use std::fmt::Write;
 
 /// Beyond this many collisionless relaxation times the curves are compared
@@ -49,9 +50,9 @@ pub fn largest_z(
         .fold(0.0, f64::max)
 }
 
-/// Max |z| of a group's mean curve against its collisionless curve.
-fn free_z(g: &Group) -> f64 {
-    match g.free() {
+/// Max |z| of a group's mean curve against a collisionless curve.
+fn free_z(g: &Group, free: Option<Mixture>) -> f64 {
+    match free {
         Some(f) => largest_z(
             &g.t,
             &g.mean,
@@ -215,15 +216,16 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
     // Every point and case.
     md.push_str(
         "| gas | d | Kn = λ/L | runs | τ (runs reaching it) | τ of the mean curve | τ free | τ / τ free | \
-         max \\|z\\| vs free, t ≤ 3 τ free | τ diffusive (Enskog D) | late mean (z vs ½) | \
+         max \\|z\\| vs free, t ≤ 3 τ free | same vs free Maxwellian at the same kT | τ diffusive (Enskog D) | late mean (z vs ½) | \
          late variance × 4N (z vs S(0)) | S(0) | CPU s | collisions |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     let (mut holds, mut fails) = (Vec::new(), Vec::new());
     for g in sweep.iter().chain(&expansion_cases) {
         let tau = g.stat("relaxation_time");
         let tau_free = g.tau_free();
-        let zf = free_z(g);
+        let zf = free_z(g, g.free());
+        let zt = free_z(g, g.free_thermal());
         let kn = g.stat("knudsen").mean;
         let named = format!("{} (Kn = {})", g.label(), num(kn));
         if zf.is_finite() {
@@ -238,7 +240,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
         let s0 = g.stat("compressibility").mean;
         let _ = writeln!(
             md,
-            "| {} | {} | {} | {} | {} ({}/{}) | {} | {} | {} | {} | {} | {} ({}) | {} ({}) | {} | {} | {} |",
+            "| {} | {} | {} | {} | {} ({}/{}) | {} | {} | {} | {} | {} | {} | {} ({}) | {} ({}) | {} | {} | {} |",
             g.label(),
             g.dimension(),
             num(kn),
@@ -250,6 +252,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
             num(tau_free),
             num(tau.mean / tau_free),
             num(zf),
+            num(zt),
             num(g.stat("relaxation_time_diffusive").mean),
             pm(late.mean, late.stderr),
             num(z(late.mean, 0.5, late.stderr)),
@@ -329,7 +332,10 @@ unfolding the reflections, its image moves freely on a line, and it is on the le
 for uniform v_x (only images within reach of the fastest particle count), and, for Maxwellian v_x at late \
 times, a sum of Fourier modes. The `max |z|` column is the largest deviation of the mean curve from it over \
 the samples up to 3 τ free, in units of the standard error the collisionless gas itself predicts for a mean \
-over the runs, √(f(1 − f)/(N runs)).\n\n\
+over the runs, √(f(1 − f)/(N runs)). The next column compares with free particles whose velocities are \
+Maxwellian at the start's kT (m⟨v_x²⟩ = p_max²/3): it says whether the data tell the two starts apart (the \
+uniform start's curve rings about ½, its modes decaying only as 1/t), and whether collisions too rare to \
+change the flight have made the velocities Maxwellian (the curve would then tend to this one).\n\n\
 **Diffusive curve** (`relaxation_time_diffusive`, `diffusion_enskog`): the diffusion equation in the same box \
 with no flux through the walls, from the same start: the same modes, each damped by exp(−D k² t). D is \
 Enskog's self-diffusion coefficient (dilute Chapman-Enskog value over the contact value of g; disks: Gass \
