@@ -184,8 +184,14 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
         md.push('\n');
     }
 
-    // The left fraction of each gas, then of each case.
+    // The left fraction of each gas (on the scaled time axis when it was
+    // started with uniform momenta), then of each case.
+    let mut singles: Vec<(String, &Group)> = Vec::new();
     for (i, (label, gs)) in gases.iter().enumerate() {
+        if !gs[0].p_max().is_finite() {
+            singles.extend(gs.iter().enumerate().map(|(j, g)| (format!("{i}_{j}"), *g)));
+            continue;
+        }
         let file = format!("expansion_left_fraction_{i}.svg");
         figures.push(Figure {
             file: file.clone(),
@@ -197,8 +203,12 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
              against t p_max / m, with the collisionless and diffusive predictions (dashed).]({file})\n"
         );
     }
-    for g in &expansion_cases {
-        let name = g.case.clone().unwrap_or_default();
+    singles.extend(
+        expansion_cases
+            .iter()
+            .map(|g| (g.case.clone().unwrap_or_default(), *g)),
+    );
+    for (name, g) in &singles {
         let file = format!("expansion_left_fraction_{name}.svg");
         figures.push(Figure {
             file: file.clone(),
