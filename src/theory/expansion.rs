@@ -94,10 +94,23 @@ impl FreeExpansion {
     /// distribution function of u0 + d is a difference of four parabolas
     /// and only the images within s + c of the start contribute.
     pub fn by_images(&self, t: f64) -> f64 {
+        self.below(0.5 * self.length, t)
+    }
+
+    /// Probability that the centre is below `z` (0 <= z <= L, in the
+    /// centres' coordinates) at time t: the images of [-z, z) modulo 2L,
+    /// summed as in `by_images`.
+    pub fn below(&self, z: f64, t: f64) -> f64 {
         let (l, c) = (self.length, self.start);
+        if z <= 0.0 {
+            return 0.0;
+        }
+        if z >= l {
+            return 1.0;
+        }
         let s = self.speeds.scale() * t.abs();
         if s == 0.0 {
-            return 1.0;
+            return (z / c).min(1.0);
         }
         match self.speeds {
             Speeds::Maxwell(_) => {
@@ -111,7 +124,7 @@ impl FreeExpansion {
                 let (mut overlap, mut tails) = (0.0, 0.0);
                 for k in first..=last {
                     let centre = 2.0 * k as f64 * l;
-                    let (a, b) = (centre - 0.5 * l, centre + 0.5 * l);
+                    let (a, b) = (centre - z, centre + z);
                     overlap += b.clamp(0.0, c) - a.clamp(0.0, c);
                     tails += tail(b / s) - tail((b - c) / s) - tail(a / s) + tail((a - c) / s);
                 }
@@ -127,7 +140,7 @@ impl FreeExpansion {
                 (first..=last)
                     .map(|k| {
                         let centre = 2.0 * k as f64 * l;
-                        below(centre + 0.5 * l) - below(centre - 0.5 * l)
+                        below(centre + z) - below(centre - z)
                     })
                     .sum()
             }
@@ -293,7 +306,7 @@ pub fn compressibility(dimension: usize, eta: f64) -> f64 {
 
 /// First t at which `f(t)` falls to `level`, scanning in steps of scale/400
 /// up to 100 scales (NaN if it never does), then bisecting.
-fn first_below(f: &dyn Fn(f64) -> f64, level: f64, scale: f64) -> f64 {
+pub fn first_below(f: &dyn Fn(f64) -> f64, level: f64, scale: f64) -> f64 {
     let step = scale / 400.0;
     let mut lo = 0.0;
     for i in 1..=40_000 {

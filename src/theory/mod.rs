@@ -5,6 +5,7 @@ pub mod carnahan_starling;
 pub mod carnahan_starling_kolafa;
 pub mod disk_virial;
 pub mod expansion;
+pub mod expansion_rods;
 pub mod henderson;
 pub mod maxwell;
 pub mod microcanonical;

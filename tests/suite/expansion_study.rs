@@ -247,6 +247,62 @@ sample_every = 0.5
     }
 }
 
+/// Ten rods of length 1: they collide but never pass, and their split is
+/// Tonks' mapping of free points in the box less their length (exact).
+#[test]
+fn finite_rods_expand_as_their_mapped_points() {
+    let text = r#"
+[study]
+name = "expansion-rods"
+replicas = 200
+seed = 4
+
+[scene]
+dimension = 1
+box = [40.0]
+velocities = { kind = "uniform", p = 1.0 }
+
+[[scene.species]]
+name = "gas"
+count = 10
+radius = 0.5
+region = { from = [0.0], to = [0.5] }
+
+[run]
+duration = 60.0
+sample_every = 0.5
+
+[analysis.expansion]
+"#;
+    let runs = ensemble(text);
+    let gas = Gas::of_descriptor(&runs[0].0.descriptor).expect("scene");
+    let rods = gas.free(Draw::Uniform(1.0));
+    assert!(matches!(
+        rods,
+        bonkers::theory::expansion_rods::Collisionless::Rods(_)
+    ));
+    let points = bonkers::theory::expansion::FreeExpansion::with(
+        40.0,
+        0.5,
+        bonkers::theory::expansion::Speeds::Uniform(1.0),
+    );
+    let mut apart = 0.0f64;
+    for i in [10, 20, 30, 40, 60, 80, 120] {
+        let (t, s) = at_sample(&runs, i);
+        let theory = rods.left_fraction(t);
+        eprintln!(
+            "t = {t}: {} +- {} against rods {theory}, free disks {}",
+            s.mean,
+            s.stderr,
+            points.left_fraction(t)
+        );
+        assert!((s.mean - theory).abs() <= 4.0 * s.stderr, "t = {t}");
+        apart = apart.max((s.mean - points.left_fraction(t)).abs() / s.stderr);
+    }
+    // And the mapping matters: free particles of the same size are off.
+    assert!(apart > 4.0, "{apart}");
+}
+
 /// `temperature_x` in a gas at rest filling its box: the slabs hold every
 /// particle at every sample, and their kT about each slab's mean velocity,
 /// pooled with weights n - 1, is the gas's kT (the Maxwellian's 1, within
@@ -292,7 +348,7 @@ fn bundled_descriptor_plans() {
     let text = std::fs::read_to_string("studies/expansion.toml").unwrap();
     let loaded = parse("studies/expansion.toml", &text).expect("valid");
     let fast = quick(&loaded).expect("quick");
-    for (loaded, runs) in [(&loaded, 24 * 12 + 5 * 12 + 2 * 48 + 6), (&fast, 104)] {
+    for (loaded, runs) in [(&loaded, 24 * 12 + 5 * 12 + 3 * 48 + 6), (&fast, 128)] {
         let planned = plan(loaded).expect("plan");
         assert_eq!(planned.len(), runs);
         for r in &planned {
@@ -304,7 +360,7 @@ fn bundled_descriptor_plans() {
         let gas = Gas::of_descriptor(&filmed.descriptor).unwrap();
         assert_eq!(
             (gas.particles, gas.diameter),
-            (if runs == 104 { 200 } else { 400 }, 1.0)
+            (if runs == 128 { 200 } else { 400 }, 1.0)
         );
         assert_eq!(
             bonkers::studies::expansion::draw(&filmed.descriptor),

@@ -8,7 +8,7 @@ use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::stats::format::num;
 use crate::stats::summary::Stats;
-use crate::theory::expansion::Mixture;
+use crate::theory::expansion_rods::Collisionless;
 use std::collections::BTreeMap;
 
 pub struct Group<'a> {
@@ -61,7 +61,7 @@ impl Group<'_> {
         Stats::of(&v)
     }
 
-    pub fn free(&self) -> Option<Mixture> {
+    pub fn free(&self) -> Option<Collisionless> {
         Some(self.gas.as_ref()?.free(self.draw?))
     }
 
@@ -69,7 +69,7 @@ impl Group<'_> {
     /// collisions have made the velocities Maxwellian without yet changing
     /// the flight, a non-Maxwellian start tends to this curve (None for a
     /// Maxwellian start, whose own curve it is).
-    pub fn free_thermal(&self) -> Option<Mixture> {
+    pub fn free_thermal(&self) -> Option<Collisionless> {
         let gas = self.gas.as_ref()?;
         match self.draw? {
             Draw::Maxwell(_) => None,

@@ -6,6 +6,7 @@ use crate::model::descriptor::Descriptor;
 use crate::model::scene::Velocities;
 use crate::scene::Built;
 use crate::theory::expansion::{Diffusive, FreeExpansion, Mixture, Speeds, compressibility};
+use crate::theory::expansion_rods::{Collisionless, Rods};
 use crate::theory::self_diffusion;
 use rand::SeedableRng;
 
@@ -141,9 +142,18 @@ impl Gas {
         compressibility(self.dimension, self.packing)
     }
 
-    /// The collisionless prediction for velocities drawn by `draw`.
-    pub fn free(&self, draw: Draw) -> Mixture {
-        Mixture {
+    /// The collisionless prediction for velocities drawn by `draw`: free
+    /// particles, or in 1D rods of one kind by Tonks' mapping (exact: equal
+    /// rods that collide swap velocities).
+    pub fn free(&self, draw: Draw) -> Collisionless {
+        if let [(r, m, c)] = self.kinds[..]
+            && self.dimension == 1
+            && r > 0.0
+            && let Some(rods) = Rods::new(self.length, c, 2.0 * r, draw.speeds(m))
+        {
+            return Collisionless::Rods(rods);
+        }
+        Collisionless::Free(Mixture {
             kinds: self
                 .kinds
                 .iter()
@@ -154,7 +164,7 @@ impl Gas {
                     )
                 })
                 .collect(),
-        }
+        })
     }
 
     /// kT once the gas has shared its energy: the count-weighted mean of

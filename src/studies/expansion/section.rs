@@ -14,7 +14,7 @@ use crate::model::run_spec::RunSpec;
 use crate::stats::format::{count, num, pm};
 use crate::stats::summary::Stats;
 use crate::studies::mixing::line;
-use crate::theory::expansion::Mixture;
+use crate::theory::expansion_rods::Collisionless;
 use std::fmt::Write;
 
 /// Beyond this many collisionless relaxation times the curves are compared
@@ -51,7 +51,7 @@ pub fn largest_z(
 }
 
 /// Max |z| of a group's mean curve against a collisionless curve.
-fn free_z(g: &Group, free: Option<Mixture>) -> f64 {
+fn free_z(g: &Group, free: Option<Collisionless>) -> f64 {
     match free {
         Some(f) => largest_z(
             &g.t,
