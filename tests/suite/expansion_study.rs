@@ -207,35 +207,43 @@ fn dilute_split_is_binomial() {
     assert!((var.mean - 1.0).abs() <= 4.0 * var.stderr);
 }
 
+/// `count` rods of radius `radius` expanding from the left half of a 1D
+/// box of 40, the Imperial start with p_max = 1.
+fn rods(count: usize, radius: f64, replicas: u32, seed: u64, duration: f64) -> String {
+    format!(
+        r#"
+[study]
+name = "expansion-rods"
+replicas = {replicas}
+seed = {seed}
+
+[scene]
+dimension = 1
+box = [40.0]
+velocities = {{ kind = "uniform", p = 1.0 }}
+
+[[scene.species]]
+name = "gas"
+count = {count}
+radius = {radius}
+region = {{ from = [0.0], to = [0.5] }}
+
+[run]
+duration = {duration}
+sample_every = 0.5
+
+[analysis.expansion]
+"#
+    )
+}
+
 /// Equal point rods swap velocities when they meet, which is the same as
 /// passing through: thousands of collisions, and the split is exactly the
 /// collisionless one (1D, the Imperial start).
 #[test]
 fn point_rods_expand_as_if_free() {
-    let text = r#"
-[study]
-name = "expansion-rods"
-replicas = 24
-seed = 3
-
-[scene]
-dimension = 1
-box = [40.0]
-velocities = { kind = "uniform", p = 1.0 }
-
-[[scene.species]]
-name = "gas"
-count = 100
-radius = 0.0
-region = { from = [0.0], to = [0.5] }
-
-[run]
-duration = 80.0
-sample_every = 0.5
-
-[analysis.expansion]
-"#;
-    let runs = ensemble(text);
+    let text = rods(100, 0.0, 24, 3, 80.0);
+    let runs = ensemble(&text);
     assert!(runs.iter().all(|(_, o)| o.collisions > 1000));
     let gas = Gas::of_descriptor(&runs[0].0.descriptor).expect("scene");
     let free = gas.free(Draw::Uniform(1.0));
@@ -251,30 +259,8 @@ sample_every = 0.5
 /// Tonks' mapping of free points in the box less their length (exact).
 #[test]
 fn finite_rods_expand_as_their_mapped_points() {
-    let text = r#"
-[study]
-name = "expansion-rods"
-replicas = 200
-seed = 4
-
-[scene]
-dimension = 1
-box = [40.0]
-velocities = { kind = "uniform", p = 1.0 }
-
-[[scene.species]]
-name = "gas"
-count = 10
-radius = 0.5
-region = { from = [0.0], to = [0.5] }
-
-[run]
-duration = 60.0
-sample_every = 0.5
-
-[analysis.expansion]
-"#;
-    let runs = ensemble(text);
+    let text = rods(10, 0.5, 200, 4, 60.0);
+    let runs = ensemble(&text);
     let gas = Gas::of_descriptor(&runs[0].0.descriptor).expect("scene");
     let rods = gas.free(Draw::Uniform(1.0));
     assert!(matches!(
