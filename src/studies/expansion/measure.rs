@@ -218,6 +218,19 @@ impl Draw {
     }
 }
 
+/// Whether every species starts in the left half (its region ends at x <=
+/// L/2): the expansion's relaxation and its theories need that; a case
+/// that fills the box (to measure diffusion) has none.
+pub fn starts_left(d: &Descriptor) -> bool {
+    crate::scene::resolve(&d.scene).is_ok_and(|scene| {
+        scene.species.iter().all(|s| {
+            s.region
+                .as_ref()
+                .is_some_and(|r| r.to.first().is_some_and(|&x| x <= 0.5))
+        })
+    })
+}
+
 /// The start's velocity rule, when the theory holds for it: a Maxwellian
 /// (the default when the scene gives none) or uniform momenta, as drawn
 /// (not rescaled to an energy). Zero total momentum shifts every velocity

@@ -15,7 +15,7 @@ use crate::model::need::Need;
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
-pub use measure::{Draw, Gas, draw, late, relaxation_time};
+pub use measure::{Draw, Gas, draw, late, relaxation_time, starts_left};
 
 /// The series every run records for it.
 pub const SERIES: &[&str] = &["left_fraction"];
@@ -65,13 +65,20 @@ impl Study for Expansion {
             .series("left_fraction")
             .ok_or("the expansion analysis needs the left_fraction series")?;
         let (t, f) = (&series.t, &series.value);
-        let tau = relaxation_time(t, f);
+        // Only an expansion relaxes: a gas started everywhere has no time.
+        let left = starts_left(run.descriptor);
+        let tau = if left {
+            relaxation_time(t, f)
+        } else {
+            f64::NAN
+        };
         let (mean, variance) = late(t, f);
-        let start = draw(run.descriptor);
+        let drawn = draw(run.descriptor);
+        let start = drawn.filter(|_| left);
         let free = start
             .map(|d| gas.free(d).relaxation_time())
             .unwrap_or(f64::NAN);
-        let enskog = start.map_or(f64::NAN, |d| gas.diffusion_enskog(d));
+        let enskog = drawn.map_or(f64::NAN, |d| gas.diffusion_enskog(d));
         let n = gas.particles as f64;
         // A run that records the mean-squared displacement (a case with a
         // periodic y axis, the gas filling the box) measures D along y.
@@ -92,7 +99,11 @@ impl Study for Expansion {
                 ("diffusion_enskog", enskog),
                 (
                     "relaxation_time_diffusive",
-                    gas.diffusive(enskog).relaxation_time(),
+                    if left {
+                        gas.diffusive(enskog).relaxation_time()
+                    } else {
+                        f64::NAN
+                    },
                 ),
                 ("late_mean", mean),
                 // Independent particles: binomial, variance 1/(4N).
@@ -112,8 +123,8 @@ impl Study for Expansion {
             "late_mean" => Some(0.5),
             "late_variance_ratio" => Some(Gas::of_descriptor(d)?.compressibility()),
             // The collisionless time: holds only while collisions are rare.
-            "relaxation_ratio" => Some(1.0),
-            "relaxation_time" => {
+            "relaxation_ratio" if starts_left(d) => Some(1.0),
+            "relaxation_time" if starts_left(d) => {
                 let free = Gas::of_descriptor(d)?.free(draw(d)?);
                 Some(free.relaxation_time())
             }

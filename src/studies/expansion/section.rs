@@ -139,7 +139,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
             num(enskog),
             num(measured.mean / enskog),
             num(tau_d),
-            num(g.stat("relaxation_time_diffusive").mean),
+            num(gas.map_or(f64::NAN, |gas| gas.diffusive(enskog).relaxation_time())),
         );
     }
 
