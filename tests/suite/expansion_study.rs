@@ -325,7 +325,8 @@ fn slab_temperatures_of_a_gas_at_rest_are_its_temperature() {
 }
 
 /// The bundled study and its quick form plan; the collisionless theory
-/// covers every run (uniform and Maxwellian starts, 1D, 2D, 3D); the movie
+/// covers every run that starts in the left half (uniform and Maxwellian
+/// starts, 1D, 2D, 3D); the movie
 /// films the densest gas at p_max = 1.
 #[test]
 fn bundled_descriptor_plans() {
@@ -337,9 +338,16 @@ fn bundled_descriptor_plans() {
     for (loaded, runs) in [(&loaded, 24 * 12 + 5 * 12 + 3 * 48 + 6), (&fast, 128)] {
         let planned = plan(loaded).expect("plan");
         assert_eq!(planned.len(), runs);
+        // All but the case that fills the box to measure diffusion.
         for r in &planned {
             let tau = bonkers::studies::theory(&r.descriptor, "relaxation_time");
-            assert!(tau.is_some_and(|t| t > 0.0), "run {}: {tau:?}", r.run_id);
+            let fills = r.case.as_deref() == Some("diffusion");
+            assert_eq!(
+                tau.is_some_and(|t| t > 0.0),
+                !fills,
+                "run {}: {tau:?}",
+                r.run_id
+            );
         }
         let movie = loaded.descriptor.observe.movie.as_ref().expect("movie").run;
         let filmed = &planned[movie as usize];
