@@ -23,6 +23,7 @@ use super::scaled_velocity_x::ScaledVelocityX;
 use super::side_counts::SideCounts;
 use super::speed_spread::SpeedSpread;
 use super::temperature::{MeanTemperature, Temperature};
+use super::temperature_x::TemperatureX;
 use super::velocities::Velocities;
 use super::velocity_x_each::VelocityXEach;
 use super::velocity_x_halves::VelocityXHalves;
@@ -80,6 +81,7 @@ catalogue![
     DensityX,
     EnergyX,
     PairDistance,
+    TemperatureX,
 ];
 
 /// The entry a descriptor means by `name` under `[observe] <kind>`.

@@ -35,6 +35,7 @@ mod scaled_velocity_x;
 mod side_counts;
 mod speed_spread;
 mod temperature;
+mod temperature_x;
 mod velocities;
 mod velocity_x_each;
 mod velocity_x_halves;

@@ -1,16 +1,49 @@
 //! Free expansion without collisions: particles start uniform in the left
-//! half of a box with walls and Maxwellian velocities, and never meet. The
-//! fraction left of the middle at time t follows exactly from the starting
-//! distribution by unfolding the reflections: a particle at u0 with velocity
-//! v is at the image of y = u0 + v t folded into [0, L], and it is on the
-//! left when y, modulo 2L, lies within L/2 of a multiple of 2L.
+//! half of a box with walls, with velocities from a known distribution, and
+//! never meet. The fraction left of the middle at time t follows exactly
+//! from the starting distribution by unfolding the reflections: a particle
+//! at u0 with velocity v is at the image of y = u0 + v t folded into
+//! [0, L], and it is on the left when y, modulo 2L, lies within L/2 of a
+//! multiple of 2L.
 //!
 //! Coordinates are those of the centres: a disk of radius a moves in
 //! [a, L_box - a], so L = L_box - 2a; it started in [a, L_box/2 - a], so
 //! u0 is uniform on [0, c] with c = L/2 - a; the middle is at L/2.
+//!
+//! Two velocity distributions (of v_x; the other axes do not matter):
+//! Maxwell's Gaussian, and the Imperial project's momenta uniform in
+//! [-p_max, p_max]. The same sum over modes, with other damping, solves the
+//! diffusion equation in the same box (`Diffusive`).
 
 use statrs::function::erf::erfc;
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
+
+/// The distribution of v_x.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Speeds {
+    /// Gaussian with this standard deviation, sqrt(kT / m).
+    Maxwell(f64),
+    /// Uniform on [-w, w], w = p_max / m.
+    Uniform(f64),
+}
+
+impl Speeds {
+    /// The speed that sets the time scale: the standard deviation, or the
+    /// largest speed.
+    pub fn scale(&self) -> f64 {
+        match *self {
+            Speeds::Maxwell(s) | Speeds::Uniform(s) => s,
+        }
+    }
+
+    /// <v_x^2>: kT / m once the gas has shared its energy.
+    pub fn mean_square(&self) -> f64 {
+        match *self {
+            Speeds::Maxwell(s) => s * s,
+            Speeds::Uniform(w) => w * w / 3.0,
+        }
+    }
+}
 
 /// One kind of particle expanding freely.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -19,83 +52,119 @@ pub struct FreeExpansion {
     pub length: f64,
     /// The centres start uniform on [0, start] (start <= length / 2).
     pub start: f64,
-    /// Standard deviation of v_x: sqrt(kT / m).
-    pub spread: f64,
+    pub speeds: Speeds,
 }
 
-/// Image sums below this s / L, mode sums above it: both are exact, each
-/// converges fast on its side.
+/// Image sums below this s / L, mode sums above it (Gaussian speeds): both
+/// are exact, each converges fast on its side.
 const SWITCH: f64 = 0.5;
 
 impl FreeExpansion {
     /// Disks (or rods, spheres) of `radius` in a box `box_length` long along
     /// x, started in its left half, with mass `mass` at temperature `kt`.
     pub fn new(box_length: f64, radius: f64, mass: f64, kt: f64) -> FreeExpansion {
+        FreeExpansion::with(box_length, radius, Speeds::Maxwell((kt / mass).sqrt()))
+    }
+
+    /// The same with any distribution of v_x.
+    pub fn with(box_length: f64, radius: f64, speeds: Speeds) -> FreeExpansion {
         let length = box_length - 2.0 * radius;
         FreeExpansion {
             length,
             start: 0.5 * length - radius,
-            spread: (kt / mass).sqrt(),
+            speeds,
         }
     }
 
     /// Fraction of the particles in the left half at time t >= 0.
     pub fn left_fraction(&self, t: f64) -> f64 {
-        let s = self.spread * t.abs();
-        if s == 0.0 {
-            1.0
-        } else if s < SWITCH * self.length {
-            self.by_images(t)
-        } else {
-            self.by_modes(t)
+        let s = self.speeds.scale() * t.abs();
+        match self.speeds {
+            _ if s == 0.0 => 1.0,
+            Speeds::Maxwell(_) if s >= SWITCH * self.length => self.by_modes(t),
+            _ => self.by_images(t),
         }
     }
 
-    /// The sum over images: each image interval [2kL - L/2, 2kL + L/2) of
-    /// y = u0 + v t, averaged over u0 uniform on [0, c] and v Gaussian
-    /// (spread s = sigma t), in closed form with G(z) = z Phi(z) + phi(z),
-    /// the integral of the normal distribution function.
+    /// The sum over images: the probability that y = u0 + v t lies in an
+    /// image interval [2kL - L/2, 2kL + L/2), with u0 uniform on [0, c].
+    /// For Gaussian v (spread s = sigma t) in closed form with G(z) = z
+    /// Phi(z) + phi(z), the integral of the normal distribution function;
+    /// for uniform v on [-w, w] (d = v t uniform on [-s, s], s = w t), the
+    /// distribution function of u0 + d is a difference of four parabolas
+    /// and only the images within s + c of the start contribute.
     pub fn by_images(&self, t: f64) -> f64 {
+        self.below(0.5 * self.length, t)
+    }
+
+    /// Probability that the centre is below `z` (0 <= z <= L, in the
+    /// centres' coordinates) at time t: the images of [-z, z) modulo 2L,
+    /// summed as in `by_images`.
+    pub fn below(&self, z: f64, t: f64) -> f64 {
         let (l, c) = (self.length, self.start);
-        let s = self.spread * t.abs();
-        if s == 0.0 {
+        if z <= 0.0 {
+            return 0.0;
+        }
+        if z >= l {
             return 1.0;
         }
-        // G(z) = max(z, 0) + G(-|z|): the ramps of an image add up to its
-        // overlap with the start [0, c] (the answer at t = 0) and only the
-        // tails, G(-|z|), remain, which no term cancels. Images more than
-        // 40 s away from [0, c] add less than round-off.
-        let reach = 40.0 * s + l;
-        let first = ((-reach) / (2.0 * l)).floor() as i64;
-        let last = ((c + reach) / (2.0 * l)).ceil() as i64;
-        let (mut overlap, mut tails) = (0.0, 0.0);
-        for k in first..=last {
-            let centre = 2.0 * k as f64 * l;
-            let (a, b) = (centre - 0.5 * l, centre + 0.5 * l);
-            overlap += b.clamp(0.0, c) - a.clamp(0.0, c);
-            tails += tail(b / s) - tail((b - c) / s) - tail(a / s) + tail((a - c) / s);
+        let s = self.speeds.scale() * t.abs();
+        if s == 0.0 {
+            return (z / c).min(1.0);
         }
-        (overlap + tails * s) / c
+        match self.speeds {
+            Speeds::Maxwell(_) => {
+                // G(z) = max(z, 0) + G(-|z|): the ramps of an image add up to
+                // its overlap with the start [0, c] (the answer at t = 0) and
+                // only the tails, G(-|z|), remain, which no term cancels.
+                // Images more than 40 s away from [0, c] add less than
+                // round-off.
+                let reach = 40.0 * s + l;
+                let (first, last) = images(l, c, reach);
+                let (mut overlap, mut tails) = (0.0, 0.0);
+                for k in first..=last {
+                    let centre = 2.0 * k as f64 * l;
+                    let (a, b) = (centre - z, centre + z);
+                    overlap += b.clamp(0.0, c) - a.clamp(0.0, c);
+                    tails += tail(b / s) - tail((b - c) / s) - tail(a / s) + tail((a - c) / s);
+                }
+                (overlap + tails * s) / c
+            }
+            Speeds::Uniform(_) => {
+                // P(u0 + d < x) = [Q(x + s) - Q(x + s - c) - Q(x - s) + Q(x -
+                // s - c)] / (2 s c), Q(x) = max(x, 0)^2 / 2.
+                let q = |x: f64| 0.5 * x.max(0.0).powi(2);
+                let below =
+                    |x: f64| (q(x + s) - q(x + s - c) - q(x - s) + q(x - s - c)) / (2.0 * s * c);
+                let (first, last) = images(l, c, s + l);
+                (first..=last)
+                    .map(|k| {
+                        let centre = 2.0 * k as f64 * l;
+                        below(centre + z) - below(centre - z)
+                    })
+                    .sum()
+            }
+        }
     }
 
     /// The sum over modes: the indicator of the left half, periodic in y
     /// with period 2L, is 1/2 + sum over odd n of (2/(n pi)) sin(n pi/2)
-    /// cos(n pi y / L); each mode is damped by exp(-(k s)^2 / 2) (the
-    /// Gaussian velocities) and by sin(k c)/(k c) (the uniform start).
+    /// cos(n pi y / L); each mode is damped by the velocities'
+    /// characteristic function at k t (exp(-(k s)^2 / 2) for Gaussian ones,
+    /// sin(k w t)/(k w t) for uniform ones) and by sin(k c)/(k c) (the
+    /// uniform start). Uniform speeds' modes fall off only as 1/n^3: the
+    /// sum stops after `MODES` of them (for tests; `by_images` is exact).
     pub fn by_modes(&self, t: f64) -> f64 {
-        let (l, c) = (self.length, self.start);
-        let s = self.spread * t.abs();
-        let mut sum = 0.5;
-        let mut n = 1u64;
-        loop {
-            let k = n as f64 * PI / l;
-            let damping = (-0.5 * (k * s).powi(2)).exp();
-            if damping < 1e-18 || n > 10_000_000 {
-                return sum;
+        let st = self.speeds.scale() * t.abs();
+        match self.speeds {
+            Speeds::Maxwell(_) => {
+                let damping = |k: f64| (-0.5 * (k * st).powi(2)).exp();
+                modes(self.length, self.start, &damping, &damping)
             }
-            let sign = if n % 4 == 1 { 1.0 } else { -1.0 };
-            sum += sign * 2.0 / (n as f64 * PI) * sinc(k * c) * damping;
-            n += 2;
+            // sinc has zeros: stop on its envelope 1 / (k w t), not on it.
+            Speeds::Uniform(_) => modes(self.length, self.start, &|k| sinc(k * st), &|k| {
+                (1.0 / (k * st)).min(1.0)
+            }),
         }
     }
 
@@ -105,9 +174,82 @@ impl FreeExpansion {
         first_below(
             &|t| self.left_fraction(t) - 0.5,
             0.5 / std::f64::consts::E,
-            self.length / self.spread,
+            self.length / self.speeds.scale(),
         )
     }
+}
+
+/// The same start spreading by diffusion (coefficient `diffusion`) with no
+/// flux through the walls: each mode decays as exp(-D k^2 t).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Diffusive {
+    pub length: f64,
+    pub start: f64,
+    pub diffusion: f64,
+}
+
+impl Diffusive {
+    /// Particles of `radius` in a box `box_length` long, started in its
+    /// left half, diffusing with coefficient `diffusion`.
+    pub fn new(box_length: f64, radius: f64, diffusion: f64) -> Diffusive {
+        let free = FreeExpansion::with(box_length, radius, Speeds::Maxwell(1.0));
+        Diffusive {
+            length: free.length,
+            start: free.start,
+            diffusion,
+        }
+    }
+
+    pub fn left_fraction(&self, t: f64) -> f64 {
+        if t <= 0.0 {
+            return 1.0;
+        }
+        let dt = self.diffusion * t;
+        let damping = |k: f64| (-dt * k * k).exp();
+        modes(self.length, self.start, &damping, &damping)
+    }
+
+    /// The first passage of the excess to 1/e of its start; about 0.8
+    /// L^2 / (pi^2 D) (the slowest mode's time).
+    pub fn relaxation_time(&self) -> f64 {
+        if self.diffusion.is_nan() || self.diffusion <= 0.0 {
+            return f64::NAN;
+        }
+        first_below(
+            &|t| self.left_fraction(t) - 0.5,
+            0.5 / std::f64::consts::E,
+            self.length * self.length / (PI * PI * self.diffusion),
+        )
+    }
+}
+
+/// Modes of the odd part of the left-half indicator averaged over the
+/// start, each damped by `damping(k)`, until `bound(k)` (a decreasing bound
+/// on |damping| from k on) says they add less than round-off, or `MODES`.
+const MODES: u64 = 2_000_000;
+
+fn modes(l: f64, c: f64, damping: &dyn Fn(f64) -> f64, bound: &dyn Fn(f64) -> f64) -> f64 {
+    let mut sum = 0.5;
+    let mut n = 1u64;
+    loop {
+        let k = n as f64 * PI / l;
+        if bound(k) < 1e-18 || n > MODES {
+            return sum;
+        }
+        let d = damping(k);
+        let sign = if n % 4 == 1 { 1.0 } else { -1.0 };
+        sum += sign * 2.0 / (n as f64 * PI) * sinc(k * c) * d;
+        n += 2;
+    }
+}
+
+/// The images k whose interval [2kL - L/2, 2kL + L/2) comes within `reach`
+/// of the start [0, c].
+fn images(l: f64, c: f64, reach: f64) -> (i64, i64) {
+    (
+        ((-reach) / (2.0 * l)).floor() as i64,
+        ((c + reach) / (2.0 * l)).ceil() as i64,
+    )
 }
 
 /// A mixture of kinds (in proportion to their counts): its left fraction
@@ -131,7 +273,7 @@ impl Mixture {
         let scale = self
             .kinds
             .iter()
-            .map(|(k, _)| k.length / k.spread)
+            .map(|(k, _)| k.length / k.speeds.scale())
             .fold(0.0, f64::max);
         first_below(
             &|t| self.left_fraction(t) - 0.5,
@@ -164,7 +306,7 @@ pub fn compressibility(dimension: usize, eta: f64) -> f64 {
 
 /// First t at which `f(t)` falls to `level`, scanning in steps of scale/400
 /// up to 100 scales (NaN if it never does), then bisecting.
-fn first_below(f: &dyn Fn(f64) -> f64, level: f64, scale: f64) -> f64 {
+pub fn first_below(f: &dyn Fn(f64) -> f64, level: f64, scale: f64) -> f64 {
     let step = scale / 400.0;
     let mut lo = 0.0;
     for i in 1..=40_000 {
@@ -229,7 +371,7 @@ mod tests {
     fn images_and_modes_agree() {
         for f in [disks(), FreeExpansion::new(20.0, 0.05, 2.0, 1.5)] {
             for r in [0.1, 0.3, 0.5, 1.0, 2.0] {
-                let t = r * f.length / f.spread;
+                let t = r * f.length / f.speeds.scale();
                 let (a, b) = (f.by_images(t), f.by_modes(t));
                 // statrs' erfc is good to ~1e-13 relative; the image sum
                 // adds a few dozen of its values (mpmath: the modes' sum at
@@ -237,36 +379,89 @@ mod tests {
                 assert!((a - b).abs() < 1e-10, "t = {t}: images {a}, modes {b}");
             }
         }
+        // Uniform speeds: the modes fall off as 1/n^3, so the sum cut after
+        // MODES of them is right to ~1e-12 at these times.
+        for f in [
+            FreeExpansion::with(40.0, 0.5, Speeds::Uniform(1.0)),
+            FreeExpansion::with(20.0, 0.05, Speeds::Uniform(0.3)),
+        ] {
+            for r in [0.2, 0.5, 1.0, 3.0, 7.3] {
+                let t = r * f.length / f.speeds.scale();
+                let (a, b) = (f.by_images(t), f.by_modes(t));
+                assert!((a - b).abs() < 1e-9, "t = {t}: images {a}, modes {b}");
+            }
+        }
     }
 
+    /// Monte Carlo of the same particles, reflected wall by wall, for both
+    /// velocity distributions: within 4 standard errors of the exact sum.
     #[test]
     fn matches_free_particles_bouncing_between_walls() {
-        // Monte Carlo of the same particles, reflected wall by wall.
-        let f = FreeExpansion::new(20.0, 0.5, 1.0, 1.0);
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
         let n = 200_000;
-        for t in [3.0, 8.0, 15.0, 40.0] {
-            let mut left = 0usize;
-            for _ in 0..n {
-                let u0 = f.start * rng.random::<f64>();
-                // Box-Muller for a Gaussian velocity.
-                let (a, b): (f64, f64) = (rng.random(), rng.random());
-                let v = f.spread * (-2.0 * (1.0 - a).ln()).sqrt() * (2.0 * PI * b).cos();
-                let mut x = u0 + v * t;
-                // Fold: reflect off 0 and L until inside.
-                while !(0.0..=f.length).contains(&x) {
-                    x = if x < 0.0 { -x } else { 2.0 * f.length - x };
+        for speeds in [Speeds::Maxwell(1.0), Speeds::Uniform(1.5)] {
+            let f = FreeExpansion::with(20.0, 0.5, speeds);
+            for t in [3.0, 8.0, 15.0, 40.0] {
+                let mut left = 0usize;
+                for _ in 0..n {
+                    let u0 = f.start * rng.random::<f64>();
+                    let (a, b): (f64, f64) = (rng.random(), rng.random());
+                    let v = match speeds {
+                        // Box-Muller for a Gaussian velocity.
+                        Speeds::Maxwell(s) => {
+                            s * (-2.0 * (1.0 - a).ln()).sqrt() * (2.0 * PI * b).cos()
+                        }
+                        Speeds::Uniform(w) => w * (2.0 * a - 1.0),
+                    };
+                    let mut x = u0 + v * t;
+                    // Fold: reflect off 0 and L until inside.
+                    while !(0.0..=f.length).contains(&x) {
+                        x = if x < 0.0 { -x } else { 2.0 * f.length - x };
+                    }
+                    left += usize::from(x < 0.5 * f.length);
                 }
-                left += usize::from(x < 0.5 * f.length);
+                let p = left as f64 / n as f64;
+                let se = (p * (1.0 - p) / n as f64).sqrt();
+                let exact = f.left_fraction(t);
+                assert!(
+                    (p - exact).abs() < 4.0 * se,
+                    "{speeds:?}, t = {t}: Monte Carlo {p} +- {se}, theory {exact}"
+                );
             }
-            let p = left as f64 / n as f64;
-            let se = (p * (1.0 - p) / n as f64).sqrt();
-            let exact = f.left_fraction(t);
-            assert!(
-                (p - exact).abs() < 4.0 * se,
-                "t = {t}: Monte Carlo {p} +- {se}, theory {exact}"
-            );
         }
+    }
+
+    /// Free flight has no time scale but L / w: the relaxation time is
+    /// inversely proportional to p_max.
+    #[test]
+    fn uniform_relaxation_time_is_inverse_in_p_max() {
+        let at = |w: f64| FreeExpansion::with(40.0, 0.5, Speeds::Uniform(w)).relaxation_time();
+        let tau = at(1.0);
+        for w in [0.25, 0.5, 2.0, 4.0] {
+            assert!((at(w) * w / tau - 1.0).abs() < 1e-9, "w = {w}");
+        }
+        // Nothing crosses the middle before the fastest particle can.
+        let f = FreeExpansion::with(40.0, 0.5, Speeds::Uniform(1.0));
+        let gap = f.length / 2.0 - f.start;
+        assert!((f.left_fraction(0.99 * gap) - 1.0).abs() < 1e-12);
+        assert!(f.left_fraction(1.01 * gap) < 1.0 - 1e-9);
+    }
+
+    /// With points filling the half exactly, the diffusive curve is the
+    /// mixing study's step (the same modes), and its time is L^2 / D over
+    /// a number.
+    #[test]
+    fn diffusive_curve_is_the_cosine_series_of_a_step() {
+        let d = Diffusive::new(30.0, 0.0, 0.7);
+        let tau = super::super::mixing::slowest_mode_time(30.0, 0.7);
+        for t in [1.0, 20.0, 100.0, 400.0] {
+            let step = super::super::mixing::step_excess(t, tau);
+            assert!((d.left_fraction(t) - 0.5 - step).abs() < 1e-12, "t = {t}");
+        }
+        let ratio = d.relaxation_time() / tau;
+        assert!((ratio - super::super::mixing::step_mixing_time(1.0)).abs() < 1e-6);
+        let slow = Diffusive::new(30.0, 0.0, 0.35);
+        assert!((slow.relaxation_time() / d.relaxation_time() - 2.0).abs() < 1e-9);
     }
 
     #[test]

@@ -1,9 +1,11 @@
 //! Theory predictions, one file each, set beside measurements in the summary.
 
+pub mod adiabat;
 pub mod carnahan_starling;
 pub mod carnahan_starling_kolafa;
 pub mod disk_virial;
 pub mod expansion;
+pub mod expansion_rods;
 pub mod heat;
 pub mod heat_free;
 pub mod henderson;
@@ -15,6 +17,7 @@ pub mod piston;
 pub mod piston_equilibrium;
 pub mod piston_exchange;
 pub mod piston_room;
+pub mod self_diffusion;
 pub mod sphere_virial;
 pub mod tonks;
 pub mod virial_series;

@@ -45,6 +45,36 @@ velocities = { kind = "maxwell", temperature = 1.7 }
     assert!(ks_p(z, normal_cdf) < 1e-10);
 }
 
+/// The Imperial start: each momentum component uniform on [-p, p],
+/// whatever the mass (masses drawn from [1, 9]; KS on m v / p, uniform on
+/// [-1, 1]), the expansion theory's `Speeds::Uniform(p / m)`.
+#[test]
+fn uniform_momenta_are_uniform_up_to_p_max() {
+    let b = built::<3>(
+        r#"
+box = [200.0, 200.0, 200.0]
+species = [{ name = "a", count = 3000, mass = [1.0, 9.0], radius = 0.0 }]
+velocities = { kind = "uniform", p = 2.5 }
+"#,
+        12,
+    )
+    .unwrap();
+    let uniform = |x: f64| ((x + 1.0) / 2.0).clamp(0.0, 1.0);
+    for k in 0..3 {
+        let u: Vec<f64> = b
+            .particles
+            .iter()
+            .map(|p| p.vel[k] * p.mass() / 2.5)
+            .collect();
+        assert!(u.iter().all(|x| x.abs() <= 1.0));
+        let p = ks_p(u, uniform);
+        assert!(p > P_MIN, "axis {k}: KS p = {p}");
+    }
+    // The same test rejects velocities (rather than momenta) uniform.
+    let u: Vec<f64> = b.particles.iter().map(|p| p.vel[0] / 2.5).collect();
+    assert!(ks_p(u, uniform) < 1e-10);
+}
+
 #[test]
 fn equal_and_explicit_velocities_are_taken_as_given() {
     let b = built::<3>(

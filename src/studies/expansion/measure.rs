@@ -5,7 +5,9 @@
 use crate::model::descriptor::Descriptor;
 use crate::model::scene::Velocities;
 use crate::scene::Built;
-use crate::theory::expansion::{FreeExpansion, Mixture, compressibility};
+use crate::theory::expansion::{Diffusive, FreeExpansion, Mixture, Speeds, compressibility};
+use crate::theory::expansion_rods::{Collisionless, Rods};
+use crate::theory::self_diffusion;
 use rand::SeedableRng;
 
 /// Part of the run, at its end, over which the settled split is averaged.
@@ -131,34 +133,121 @@ impl Gas {
         path / self.length
     }
 
+    pub fn volume(&self) -> f64 {
+        self.particles as f64 / self.density
+    }
+
     /// Variance of the late split over the binomial's: S(0).
     pub fn compressibility(&self) -> f64 {
         compressibility(self.dimension, self.packing)
     }
 
-    /// The collisionless prediction at temperature `kt`.
-    pub fn free(&self, kt: f64) -> Mixture {
-        Mixture {
+    /// The collisionless prediction for velocities drawn by `draw`: free
+    /// particles, or in 1D rods of one kind by Tonks' mapping (exact: equal
+    /// rods that collide swap velocities).
+    pub fn free(&self, draw: Draw) -> Collisionless {
+        if let [(r, m, c)] = self.kinds[..]
+            && self.dimension == 1
+            && r > 0.0
+            && let Some(rods) = Rods::new(self.length, c, 2.0 * r, draw.speeds(m))
+        {
+            return Collisionless::Rods(rods);
+        }
+        Collisionless::Free(Mixture {
             kinds: self
                 .kinds
                 .iter()
-                .map(|&(r, m, c)| (FreeExpansion::new(self.length, r, m, kt), c as f64))
+                .map(|&(r, m, c)| {
+                    (
+                        FreeExpansion::with(self.length, r, draw.speeds(m)),
+                        c as f64,
+                    )
+                })
                 .collect(),
+        })
+    }
+
+    /// kT once the gas has shared its energy: the count-weighted mean of
+    /// each kind's m <v_x^2>.
+    pub fn temperature(&self, draw: Draw) -> f64 {
+        let energy: f64 = self
+            .kinds
+            .iter()
+            .map(|&(_, m, c)| c as f64 * m * draw.speeds(m).mean_square())
+            .sum();
+        energy / self.particles as f64
+    }
+
+    /// Enskog's self-diffusion coefficient of the gas filling the whole box
+    /// at its final temperature (the count-weighted mean mass and diameter
+    /// of a mixture). NaN for rods and points.
+    pub fn diffusion_enskog(&self, draw: Draw) -> f64 {
+        let n = self.particles as f64;
+        let mass = self.kinds.iter().map(|k| k.1 * k.2 as f64).sum::<f64>() / n;
+        let kt = self.temperature(draw);
+        let (d, rho) = (self.diameter, self.density);
+        if d > 0.0 {
+            self_diffusion::enskog(self.dimension, rho, d, kt, mass, self.packing)
+        } else {
+            f64::NAN
+        }
+    }
+
+    /// The diffusive prediction with coefficient `diffusion`.
+    pub fn diffusive(&self, diffusion: f64) -> Diffusive {
+        Diffusive::new(self.length, 0.5 * self.diameter, diffusion)
+    }
+}
+
+/// How the gas's velocities were drawn, as far as the theory follows them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Draw {
+    /// Maxwellian at this kT.
+    Maxwell(f64),
+    /// Each momentum component uniform in [-p, p] (the Imperial start).
+    Uniform(f64),
+}
+
+impl Draw {
+    /// The distribution of v_x of a particle of mass `mass`.
+    pub fn speeds(&self, mass: f64) -> Speeds {
+        match *self {
+            Draw::Maxwell(kt) => Speeds::Maxwell((kt / mass).sqrt()),
+            Draw::Uniform(p) => Speeds::Uniform(p / mass),
         }
     }
 }
 
-/// kT of a Maxwellian start (the default when the scene gives none); None
-/// for other velocity rules, for which the theory here does not hold.
-pub fn temperature(d: &Descriptor) -> Option<f64> {
+/// Whether every species starts in the left half (its region ends at x <=
+/// L/2): the expansion's relaxation and its theories need that; a case
+/// that fills the box (to measure diffusion) has none.
+pub fn starts_left(d: &Descriptor) -> bool {
+    crate::scene::resolve(&d.scene).is_ok_and(|scene| {
+        scene.species.iter().all(|s| {
+            s.region
+                .as_ref()
+                .is_some_and(|r| r.to.first().is_some_and(|&x| x <= 0.5))
+        })
+    })
+}
+
+/// The start's velocity rule, when the theory holds for it: a Maxwellian
+/// (the default when the scene gives none) or uniform momenta, as drawn
+/// (not rescaled to an energy). Zero total momentum shifts every velocity
+/// by the mean, of order p / sqrt(N): the theory ignores it. None for other
+/// rules.
+pub fn draw(d: &Descriptor) -> Option<Draw> {
     let scene = crate::scene::resolve(&d.scene).ok()?;
     match scene.velocities {
-        None => Some(1.0),
+        None => Some(Draw::Maxwell(1.0)),
         Some(Velocities::Maxwell {
             temperature,
             energy: None,
             ..
-        }) => Some(temperature),
+        }) => Some(Draw::Maxwell(temperature)),
+        Some(Velocities::Uniform {
+            p, energy: None, ..
+        }) => Some(Draw::Uniform(p)),
         Some(_) => None,
     }
 }

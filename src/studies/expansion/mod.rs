@@ -3,8 +3,11 @@
 //! How fast does the split relax toward N/2, against particles that never
 //! collide; where does it settle and how much does it fluctuate there?
 
+mod charts;
 mod error;
+mod group;
 mod measure;
+mod profiles;
 mod section;
 
 use super::{Finished, Start, Study};
@@ -13,7 +16,7 @@ use crate::model::need::Need;
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
 use crate::stats::ensemble::Runs;
-pub use measure::{Gas, late, relaxation_time, temperature};
+pub use measure::{Draw, Gas, draw, late, relaxation_time, starts_left};
 
 /// The series every run records for it.
 pub const SERIES: &[&str] = &["left_fraction"];
@@ -26,6 +29,9 @@ pub const RESULTS: &[&str] = &[
     "relaxation_time",
     "relaxation_time_free",
     "relaxation_ratio",
+    "diffusion_enskog",
+    "relaxation_time_diffusive",
+    "diffusion_measured",
     "late_mean",
     "late_variance_ratio",
     "compressibility",
@@ -39,7 +45,7 @@ impl Study for Expansion {
         "expansion"
     }
     fn about(&self) -> &'static str {
-        "a gas started in the left half spreads into the right: relaxation time of the left fraction against free particles bouncing between walls, late split and its fluctuations against the binomial"
+        "a gas started in the left half spreads into the right: relaxation time of the left fraction against p_max, density and N, beside the exact collisionless prediction (uniform or Maxwellian start) and the diffusive one (Enskog D); profiles of density and temperature; the late split against the binomial"
     }
     fn needs(&self) -> &'static [Need] {
         &[Need::Sampling, Need::Walls]
@@ -60,12 +66,29 @@ impl Study for Expansion {
             .series("left_fraction")
             .ok_or("the expansion analysis needs the left_fraction series")?;
         let (t, f) = (&series.t, &series.value);
-        let tau = relaxation_time(t, f);
+        // Only an expansion relaxes: a gas started everywhere has no time.
+        let left = starts_left(run.descriptor);
+        let tau = if left {
+            relaxation_time(t, f)
+        } else {
+            f64::NAN
+        };
         let (mean, variance) = late(t, f);
-        let free = temperature(run.descriptor)
-            .map(|kt| gas.free(kt).relaxation_time())
+        let drawn = draw(run.descriptor);
+        let start = drawn.filter(|_| left);
+        let free = start
+            .map(|d| gas.free(d).relaxation_time())
             .unwrap_or(f64::NAN);
+        let enskog = drawn.map_or(f64::NAN, |d| gas.diffusion_enskog(d));
         let n = gas.particles as f64;
+        // A run that records the mean-squared displacement (a case with a
+        // periodic y axis, the gas filling the box) measures D along y.
+        let measured = out
+            .series
+            .iter()
+            .filter(|s| s.observable.starts_with("msd.") && s.observable.ends_with(".y"))
+            .map(|s| crate::studies::mixing::diffusion(&s.t, &s.value).0)
+            .next();
         out.scalars.extend(
             [
                 ("particles", n),
@@ -74,6 +97,15 @@ impl Study for Expansion {
                 ("relaxation_time", tau),
                 ("relaxation_time_free", free),
                 ("relaxation_ratio", tau / free),
+                ("diffusion_enskog", enskog),
+                (
+                    "relaxation_time_diffusive",
+                    if left {
+                        gas.diffusive(enskog).relaxation_time()
+                    } else {
+                        f64::NAN
+                    },
+                ),
                 ("late_mean", mean),
                 // Independent particles: binomial, variance 1/(4N).
                 ("late_variance_ratio", variance * 4.0 * n),
@@ -82,6 +114,10 @@ impl Study for Expansion {
             ]
             .map(|(k, v)| (k.to_string(), v)),
         );
+        if let Some(d) = measured {
+            out.scalars.push(("diffusion_measured".into(), d));
+        }
+        profiles::pool(out);
         Ok(())
     }
     fn theory(&self, d: &Descriptor, result: &str) -> Option<f64> {
@@ -89,9 +125,9 @@ impl Study for Expansion {
             "late_mean" => Some(0.5),
             "late_variance_ratio" => Some(Gas::of_descriptor(d)?.compressibility()),
             // The collisionless time: holds only while collisions are rare.
-            "relaxation_ratio" => Some(1.0),
-            "relaxation_time" => {
-                let free = Gas::of_descriptor(d)?.free(temperature(d)?);
+            "relaxation_ratio" if starts_left(d) => Some(1.0),
+            "relaxation_time" if starts_left(d) => {
+                let free = Gas::of_descriptor(d)?.free(draw(d)?);
                 Some(free.relaxation_time())
             }
             _ => None,

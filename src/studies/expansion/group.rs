@@ -1,0 +1,151 @@
+//! The runs of one sweep point or case, with what the report needs of them:
+//! the scene as the theory sees it, how its velocities were drawn, per-run
+//! results as ensemble statistics and the ensemble-mean left fraction.
+
+use super::measure::{Draw, Gas, draw};
+use super::relaxation_time;
+use crate::model::run_output::RunOutput;
+use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs;
+use crate::stats::format::num;
+use crate::stats::summary::Stats;
+use crate::theory::expansion_rods::Collisionless;
+use std::collections::BTreeMap;
+
+pub struct Group<'a> {
+    /// The case's name; None for a sweep point.
+    pub case: Option<String>,
+    pub point: u64,
+    /// Every run of the plan, for this point's series means.
+    pub all: &'a Runs,
+    pub outs: Vec<&'a RunOutput>,
+    pub gas: Option<Gas>,
+    pub draw: Option<Draw>,
+    /// Sample times and the ensemble's left fraction at each.
+    pub t: Vec<f64>,
+    pub mean: Vec<Stats>,
+}
+
+/// A sweep point's or case's runs, keyed by (case, point).
+type ByPoint<'a> = BTreeMap<(Option<String>, u64), Vec<&'a (RunSpec, RunOutput)>>;
+
+/// Runs grouped by sweep point (in order), then by case (in name order).
+pub fn groups(runs: &Runs) -> Vec<Group<'_>> {
+    let mut by: ByPoint = BTreeMap::new();
+    for r in runs.iter() {
+        let key = (r.0.case.clone(), r.0.point_id);
+        by.entry(key).or_default().push(r);
+    }
+    by.into_iter()
+        .map(|((case, point), rs)| {
+            let d = &rs[0].0.descriptor;
+            let outs: Vec<&RunOutput> = rs.iter().map(|r| &r.1).collect();
+            let (t, mean) = runs.mean(point, "left_fraction").unwrap_or_default();
+            Group {
+                case,
+                point,
+                all: runs,
+                gas: Gas::of_descriptor(d),
+                draw: draw(d),
+                outs,
+                t,
+                mean,
+            }
+        })
+        .collect()
+}
+
+impl Group<'_> {
+    /// A per-run result over the runs that report it finite.
+    pub fn stat(&self, name: &str) -> Stats {
+        let v: Vec<f64> = self
+            .outs
+            .iter()
+            .filter_map(|o| o.scalar(name))
+            .filter(|v| v.is_finite())
+            .collect();
+        Stats::of(&v)
+    }
+
+    pub fn free(&self) -> Option<Collisionless> {
+        Some(self.gas.as_ref()?.free(self.draw?))
+    }
+
+    /// Free particles with Maxwellian velocities at the start's kT: where
+    /// collisions have made the velocities Maxwellian without yet changing
+    /// the flight, a non-Maxwellian start tends to this curve (None for a
+    /// Maxwellian start, whose own curve it is).
+    pub fn free_thermal(&self) -> Option<Collisionless> {
+        let gas = self.gas.as_ref()?;
+        match self.draw? {
+            Draw::Maxwell(_) => None,
+            d => Some(gas.free(Draw::Maxwell(gas.temperature(d)))),
+        }
+    }
+
+    pub fn tau_free(&self) -> f64 {
+        self.free().map_or(f64::NAN, |f| f.relaxation_time())
+    }
+
+    /// The first passage of the ensemble-mean curve.
+    pub fn tau_of_mean(&self) -> f64 {
+        let curve: Vec<f64> = self.mean.iter().map(|s| s.mean).collect();
+        relaxation_time(&self.t, &curve)
+    }
+
+    pub fn dimension(&self) -> usize {
+        self.gas.as_ref().map_or(0, |g| g.dimension)
+    }
+
+    pub fn particles(&self) -> f64 {
+        self.gas.as_ref().map_or(f64::NAN, |g| g.particles as f64)
+    }
+
+    pub fn radius(&self) -> f64 {
+        self.gas.as_ref().map_or(f64::NAN, |g| g.diameter / 2.0)
+    }
+
+    /// p_max of a uniform start (NaN for a Maxwellian one).
+    pub fn p_max(&self) -> f64 {
+        match self.draw {
+            Some(Draw::Uniform(p)) => p,
+            _ => f64::NAN,
+        }
+    }
+
+    /// "p_max = 2" or "kT = 1".
+    pub fn start_text(&self) -> String {
+        match self.draw {
+            Some(Draw::Uniform(p)) => format!("p_max = {}", num(p)),
+            Some(Draw::Maxwell(kt)) => format!("Maxwell kT = {}", num(kt)),
+            None => "other".into(),
+        }
+    }
+
+    pub fn label(&self) -> String {
+        let what = match self.dimension() {
+            1 => "rods",
+            3 => "spheres",
+            _ => "disks",
+        };
+        let case = self
+            .case
+            .as_ref()
+            .map(|c| format!("{c}: "))
+            .unwrap_or_default();
+        format!(
+            "{case}{} {what}, radius {}, {}",
+            self.particles(),
+            num(self.radius()),
+            self.start_text()
+        )
+    }
+
+    pub fn cpu_seconds(&self) -> f64 {
+        self.outs.iter().map(|o| o.cpu_seconds).sum()
+    }
+
+    pub fn collisions(&self) -> u64 {
+        self.outs.iter().map(|o| o.collisions).sum()
+    }
+}
