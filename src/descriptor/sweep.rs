@@ -117,32 +117,46 @@ pub fn count(loaded: &Loaded) -> (u64, u64) {
     )
 }
 
-/// A value as a number compares: integers that a float holds exactly are
-/// written as that float, so `10` and `10.0` give one text; tables with
-/// sorted keys. Two values with the same text set a key alike.
+/// How a value's text writes numbers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Numbers {
+    /// As they compare: an integer that a float holds exactly is written as
+    /// that float and -0.0 as 0.0, so `10` and `10.0` give one text.
+    Alike,
+    /// As written, integers apart from floats (the seeds' form: it must
+    /// never change, or every saved run's seed would).
+    AsWritten,
+}
+
+/// A value's canonical text (floats in Rust's shortest round-trip form,
+/// tables with sorted keys): two values with the same `Alike` text set a key
+/// alike.
 pub fn value_text(value: &toml::Value) -> String {
     let mut out = String::new();
-    write_value(value, &mut out);
+    write_value(value, Numbers::Alike, &mut out);
     out
 }
 
-/// `value_text` of a sweep point's (key, value) pairs.
-pub fn point_text(params: &[(String, toml::Value)]) -> String {
+/// The text of a sweep point's (key, value) pairs, a line each.
+pub fn point_text(params: &[(String, toml::Value)], numbers: Numbers) -> String {
     let mut out = String::new();
     for (key, value) in params {
         out.push_str(key);
         out.push('=');
-        write_value(value, &mut out);
+        write_value(value, numbers, &mut out);
         out.push('\n');
     }
     out
 }
 
-fn write_value(value: &toml::Value, out: &mut String) {
+fn write_value(value: &toml::Value, numbers: Numbers, out: &mut String) {
     use std::fmt::Write;
+    let alike = numbers == Numbers::Alike;
     let _ = match value {
-        toml::Value::Integer(i) if i.unsigned_abs() <= 1 << 53 => write!(out, "{:?}", *i as f64),
-        toml::Value::Float(f) if *f == 0.0 => write!(out, "0.0"),
+        toml::Value::Integer(i) if alike && i.unsigned_abs() <= 1 << 53 => {
+            write!(out, "{:?}", *i as f64)
+        }
+        toml::Value::Float(f) if alike && *f == 0.0 => write!(out, "0.0"),
         toml::Value::Float(f) => write!(out, "{f:?}"),
         toml::Value::Integer(i) => write!(out, "{i}"),
         toml::Value::String(s) => write!(out, "{s:?}"),
@@ -151,7 +165,7 @@ fn write_value(value: &toml::Value, out: &mut String) {
         toml::Value::Array(items) => {
             out.push('[');
             for item in items {
-                write_value(item, out);
+                write_value(item, numbers, out);
                 out.push(',');
             }
             write!(out, "]")
@@ -162,7 +176,7 @@ fn write_value(value: &toml::Value, out: &mut String) {
             keys.sort();
             for k in keys {
                 let _ = write!(out, "{k:?}=");
-                write_value(&t[k], out);
+                write_value(&t[k], numbers, out);
                 out.push(',');
             }
             write!(out, "}}")

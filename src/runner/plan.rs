@@ -7,7 +7,7 @@
 use crate::descriptor::errors::DescriptorError;
 use crate::descriptor::load::{Loaded, show};
 use crate::descriptor::point::{PointBase, PointError};
-use crate::descriptor::sweep::{HARD_LIMIT, count, point_text, points};
+use crate::descriptor::sweep::{HARD_LIMIT, Numbers, count, point_text, points};
 use crate::descriptor::validate;
 use crate::model::descriptor::Descriptor;
 use crate::model::run_spec::RunSpec;
@@ -64,7 +64,7 @@ pub fn plan(loaded: &Loaded) -> Result<Vec<RunSpec>, DescriptorError> {
         let repeat = match seen.insert(key, point_id) {
             Some(other) => Some((other, "seeds")),
             None => same
-                .insert(point_text(&params), point_id)
+                .insert(point_text(&params, Numbers::Alike), point_id)
                 .map(|o| (o, "settings")),
         };
         if let Some((other, what)) = repeat {

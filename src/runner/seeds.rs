@@ -3,6 +3,8 @@
 //! execution order, nor on where its point sits in the sweep: inserting or
 //! removing a sweep value leaves every other point's seeds unchanged.
 
+use crate::descriptor::sweep::{Numbers, point_text};
+
 /// SplitMix64's finalizer: a bijective mixer with good avalanche.
 fn mix(mut z: u64) -> u64 {
     z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
@@ -22,47 +24,10 @@ pub fn run_seed(study_seed: u64, point_key: u64, replica: u32) -> u64 {
 }
 
 /// A sweep point's identity: a hash of its (key path, value) pairs in a
-/// canonical text form (floats in Rust's shortest round-trip form, tables
-/// with sorted keys), independent of the point's index in the sweep.
+/// canonical text form (`sweep::point_text` with numbers as written),
+/// independent of the point's index in the sweep.
 pub fn point_key(params: &[(String, toml::Value)]) -> u64 {
-    let mut text = String::new();
-    for (key, value) in params {
-        text.push_str(key);
-        text.push('=');
-        canonical(value, &mut text);
-        text.push('\n');
-    }
-    fnv1a(text.as_bytes())
-}
-
-fn canonical(value: &toml::Value, out: &mut String) {
-    use std::fmt::Write;
-    let _ = match value {
-        toml::Value::Float(f) => write!(out, "{f:?}"),
-        toml::Value::Integer(i) => write!(out, "{i}"),
-        toml::Value::String(s) => write!(out, "{s:?}"),
-        toml::Value::Boolean(b) => write!(out, "{b}"),
-        toml::Value::Datetime(d) => write!(out, "{d}"),
-        toml::Value::Array(items) => {
-            out.push('[');
-            for item in items {
-                canonical(item, out);
-                out.push(',');
-            }
-            write!(out, "]")
-        }
-        toml::Value::Table(t) => {
-            out.push('{');
-            let mut keys: Vec<&String> = t.keys().collect();
-            keys.sort();
-            for k in keys {
-                let _ = write!(out, "{k:?}=");
-                canonical(&t[k], out);
-                out.push(',');
-            }
-            write!(out, "}}")
-        }
-    };
+    fnv1a(point_text(params, Numbers::AsWritten).as_bytes())
 }
 
 /// FNV-1a over bytes: a stable (Rust-version independent) fingerprint hash.

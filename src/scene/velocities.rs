@@ -53,6 +53,21 @@ pub fn one<const D: usize>(
     })
 }
 
+/// kT of a Maxwellian start set by its temperature (Maxwell at kT = 1 is
+/// the rule when a scene gives none); None for other rules, or one that
+/// sets the energy instead.
+pub fn maxwell_temperature(rule: Option<&Velocities>) -> Option<f64> {
+    match rule {
+        None => Some(1.0),
+        Some(Velocities::Maxwell {
+            temperature,
+            energy: None,
+            ..
+        }) => Some(*temperature),
+        Some(_) => None,
+    }
+}
+
 /// (zero_momentum, energy) of the rule.
 pub fn adjustments(spec: &Velocities) -> (bool, Option<f64>) {
     match spec {

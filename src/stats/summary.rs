@@ -140,6 +140,16 @@ impl Stats {
     }
 }
 
+/// A scalar result over runs, from those that measured it finite.
+pub fn scalar<'a>(outs: impl IntoIterator<Item = &'a RunOutput>, name: &str) -> Stats {
+    let values: Vec<f64> = outs
+        .into_iter()
+        .filter_map(|o| o.scalar(name))
+        .filter(|v| v.is_finite())
+        .collect();
+    Stats::of(&values)
+}
+
 /// The two-sided `CONFIDENCE` quantile of Student's t with `dof` degrees of freedom.
 pub fn t_quantile(dof: u64) -> f64 {
     match StudentsT::new(0.0, 1.0, dof as f64) {

@@ -58,13 +58,7 @@ pub fn groups(runs: &Runs) -> Vec<Group<'_>> {
 impl Group<'_> {
     /// A per-run result over the runs that report it finite.
     pub fn stat(&self, name: &str) -> Stats {
-        let v: Vec<f64> = self
-            .outs
-            .iter()
-            .filter_map(|o| o.scalar(name))
-            .filter(|v| v.is_finite())
-            .collect();
-        Stats::of(&v)
+        crate::stats::summary::scalar(self.outs.iter().copied(), name)
     }
 
     pub fn free(&self) -> Option<Collisionless> {

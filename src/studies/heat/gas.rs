@@ -4,7 +4,8 @@
 //! conducting heat from a hot to a cold wall across x.
 
 use crate::model::descriptor::Descriptor;
-use crate::model::scene::{Boundary, Side, Velocities};
+use crate::model::scene::{Boundary, Side};
+use crate::scene::velocities::maxwell_temperature;
 use crate::theory::heat::{compressibility, exchange_rate, mean_free_path};
 use crate::theory::heat_free::FreeRelaxation;
 use std::f64::consts::PI;
@@ -60,15 +61,7 @@ impl Gas {
             .iter()
             .map(|w| (w.axis, w.side == Side::High, w.temperature))
             .collect();
-        let start = match scene.velocities {
-            None => Some(1.0),
-            Some(Velocities::Maxwell {
-                temperature,
-                energy: None,
-                ..
-            }) => Some(temperature),
-            Some(_) => None,
-        };
+        let start = maxwell_temperature(scene.velocities.as_ref());
         Ok(Gas {
             dimension,
             particles: n,

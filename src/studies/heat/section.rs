@@ -25,12 +25,7 @@ const SHOWN: f64 = 5.0;
 pub(super) type Runs<'a> = Vec<&'a (RunSpec, RunOutput)>;
 
 pub(super) fn stat(rs: &Runs, name: &str) -> Stats {
-    let v: Vec<f64> = rs
-        .iter()
-        .filter_map(|r| r.1.scalar(name))
-        .filter(|v| v.is_finite())
-        .collect();
-    Stats::of(&v)
+    crate::stats::summary::scalar(rs.iter().map(|r| &r.1), name)
 }
 
 /// "mean ± se (z)" against `theory`.

@@ -10,8 +10,8 @@
 use super::measure::{first_passage, late_mean, line};
 use crate::model::descriptor::Descriptor;
 use crate::model::run_output::RunOutput;
-use crate::model::scene::Velocities;
 use crate::scene::Built;
+use crate::scene::velocities::maxwell_temperature;
 use crate::theory::mixing::disk_diffusion_enskog;
 
 /// The fit of the mean-squared displacement starts at this fraction of the
@@ -21,15 +21,7 @@ pub const FIT_FROM: f64 = 0.25;
 /// kT of a Maxwellian start (the default when the scene gives none); None
 /// for other velocity rules.
 pub fn temperature(d: &Descriptor) -> Option<f64> {
-    match crate::scene::resolve(&d.scene).ok()?.velocities {
-        None => Some(1.0),
-        Some(Velocities::Maxwell {
-            temperature,
-            energy: None,
-            ..
-        }) => Some(temperature),
-        Some(_) => None,
-    }
+    maxwell_temperature(crate::scene::resolve(&d.scene).ok()?.velocities.as_ref())
 }
 
 /// Self-diffusion coefficient from a mean-squared displacement along one

@@ -21,13 +21,7 @@ pub struct Point<'a> {
 impl Point<'_> {
     /// A scalar over the runs, finite values only.
     pub fn stat(&self, name: &str) -> Stats {
-        let v: Vec<f64> = self
-            .outs
-            .iter()
-            .filter_map(|o| o.scalar(name))
-            .filter(|v| v.is_finite())
-            .collect();
-        Stats::of(&v)
+        crate::stats::summary::scalar(self.outs.iter().copied(), name)
     }
     /// A scalar's value in the first run (the same in every run of a point).
     pub fn first(&self, name: &str) -> f64 {

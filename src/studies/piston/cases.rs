@@ -20,12 +20,7 @@ pub(super) fn runs<'a>(all: &'a [Run], name: &str) -> Vec<&'a Run> {
 
 /// A result over the runs that measured it.
 pub(super) fn stat(runs: &[&Run], name: &str) -> Stats {
-    let values: Vec<f64> = runs
-        .iter()
-        .filter_map(|(_, o)| o.scalar(name))
-        .filter(|v| v.is_finite())
-        .collect();
-    Stats::of(&values)
+    crate::stats::summary::scalar(runs.iter().map(|r| &r.1), name)
 }
 
 /// Collisions and CPU seconds the runs cost.

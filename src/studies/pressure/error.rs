@@ -26,7 +26,8 @@
 
 use super::{equations, packing};
 use crate::model::descriptor::Descriptor;
-use crate::model::scene::{Boundary, Drawn, Mass, Velocities};
+use crate::model::scene::{Boundary, Drawn, Mass};
+use crate::scene::velocities::maxwell_temperature;
 use crate::studies::error_model::ErrorModel;
 use std::f64::consts::PI;
 
@@ -66,14 +67,7 @@ pub fn error_model(d: &Descriptor) -> Option<ErrorModel> {
     let (Drawn::Fixed(r), Mass::Fixed(m)) = (s.radius, s.mass) else {
         return None;
     };
-    let kt = match scene.velocities {
-        Some(Velocities::Maxwell {
-            temperature,
-            energy: None,
-            ..
-        }) => temperature,
-        _ => 1.0,
-    };
+    let kt = maxwell_temperature(scene.velocities.as_ref()).unwrap_or(1.0);
     let time = d.run.duration? * (kt / m).sqrt() / (2.0 * r);
     let z = (equations::of(dim)[0].z)(eta);
     let sigma = CORRELATION * (4.0 * (z - 1.0) / (PI.sqrt() * dim as f64 * n as f64 * time)).sqrt();
