@@ -4,7 +4,7 @@
 //! conducting heat from a hot to a cold wall across x.
 
 use crate::model::descriptor::Descriptor;
-use crate::model::scene::{Boundary, Side, Velocities};
+use crate::model::scene::{Boundary, Placement, RodOrder, Side, Velocities};
 use crate::theory::heat::{compressibility, exchange_rate, mean_free_path};
 use crate::theory::heat_free::FreeRelaxation;
 use std::f64::consts::PI;
@@ -22,6 +22,8 @@ pub struct Gas {
     pub walls: Vec<(usize, bool, f64)>,
     /// kT of a Maxwellian start (None for other velocity rules).
     pub start: Option<f64>,
+    /// Rods placed with the species in turn (`placement.order = "alternating"`).
+    pub alternating: bool,
 }
 
 /// What a run of the heat analysis is.
@@ -78,6 +80,12 @@ impl Gas {
             walled,
             walls,
             start,
+            alternating: matches!(
+                scene.placement,
+                Some(Placement::Random {
+                    order: Some(RodOrder::Alternating)
+                })
+            ),
         })
     }
 
