@@ -142,6 +142,16 @@ pub struct Region {
     pub to: Vec<f64>,
 }
 
+/// The order of the species along a line of rods.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RodOrder {
+    /// Every order equally likely (the uniform placement).
+    Random,
+    /// Species take turns: 0, 1, ..., 0, 1, ... from x = 0.
+    Alternating,
+}
+
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum Placement {
@@ -149,7 +159,13 @@ pub enum Placement {
     /// 1D is exact at any density; 2D/3D use random sequential insertion,
     /// which jams near packing fraction 0.547 (2D) and 0.38 (3D) — use
     /// "compress" or "lattice" for denser scenes.
-    Random,
+    Random {
+        /// 1D only: the species' order along the line. Random (default) or
+        /// "alternating": the species take turns, in `[[scene.species]]`
+        /// order (the alternating-mass chain), with the gaps still uniform.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        order: Option<RodOrder>,
+    },
     /// Lattice sites filling each species' region, radius included: equal
     /// spacing (1D, `lattice = "line"`), "square" or "hexagonal" (2D, default
     /// hexagonal), "cubic" or "fcc" (3D, default fcc). Species with the same

@@ -7,7 +7,9 @@ use super::slots::{self, Piston};
 use super::space::{Slot, Space};
 use super::{check, lattice, piston, placement, rods, velocities};
 use crate::engine::{Axis, Particle, SimBox, Wall};
-use crate::model::scene::{Boundary, CompressFrom, Drawn, Placement, SceneSpec, Side, Velocities};
+use crate::model::scene::{
+    Boundary, CompressFrom, Drawn, Placement, RodOrder, SceneSpec, Side, Velocities,
+};
 use rand::RngExt;
 use rand_chacha::ChaCha8Rng;
 
@@ -67,14 +69,32 @@ pub fn build<const D: usize>(spec: &SceneSpec, rng: &mut ChaCha8Rng) -> Result<B
     }
 
     let mut prepared = None;
-    let positions = match spec.placement.clone().unwrap_or(Placement::Random) {
-        Placement::Random | Placement::Compress { .. } if D == 1 => {
-            rods::place(&as_line(&slots), obstacle.map(|p| p.extent()), &names, rng)?
-                .into_iter()
-                .map(|[x]| std::array::from_fn(|_| x))
-                .collect()
-        }
-        Placement::Random => {
+    let positions = match spec
+        .placement
+        .clone()
+        .unwrap_or(Placement::Random { order: None })
+    {
+        Placement::Random { order } if D == 1 => rods::place(
+            &as_line(&slots),
+            obstacle.map(|p| p.extent()),
+            &names,
+            order == Some(RodOrder::Alternating),
+            rng,
+        )?
+        .into_iter()
+        .map(|[x]| std::array::from_fn(|_| x))
+        .collect(),
+        Placement::Compress { .. } if D == 1 => rods::place(
+            &as_line(&slots),
+            obstacle.map(|p| p.extent()),
+            &names,
+            false,
+            rng,
+        )?
+        .into_iter()
+        .map(|[x]| std::array::from_fn(|_| x))
+        .collect(),
+        Placement::Random { .. } => {
             // Beside a piston wall each gas keeps to its own side.
             placement::random(&clear_of(&slots, obstacle, &names)?, &space, rng)?
         }

@@ -10,6 +10,10 @@
 //! overlap without being equal, a region the obstacle splits in two) is
 //! sampled exactly by rejection from the joint placement on the union of the
 //! regions, and refused with a clear error when that is hopeless.
+//!
+//! With `alternating` the order is fixed instead (species in turn, as in the
+//! alternating-mass chain); the gaps stay uniform, so the placement is
+//! uniform over the configurations with that order.
 
 use super::refusal::{Blame, Refusal};
 use super::slots::{Group, singles};
@@ -25,6 +29,7 @@ pub fn place(
     slots: &[Slot<1>],
     obstacle: Option<[f64; 2]>,
     names: &[String],
+    alternating: bool,
     rng: &mut ChaCha8Rng,
 ) -> Result<Vec<[f64; 1]>, String> {
     let groups = singles(slots);
@@ -33,8 +38,15 @@ pub fn place(
     for cluster in clusters(&groups) {
         let span = Span::of(&groups, &cluster, obstacle);
         let x = match span.segment {
-            Some((from, to)) => line_up(slots, &cluster, from, to, rng),
-            None => by_rejection(slots, &cluster, (span.lo, span.hi), obstacle, rng),
+            Some((from, to)) => line_up(slots, &cluster, from, to, alternating, rng),
+            None => by_rejection(
+                slots,
+                &cluster,
+                (span.lo, span.hi),
+                obstacle,
+                alternating,
+                rng,
+            ),
         }
         .ok_or_else(|| tangled(slots, &cluster, obstacle, span.shared, names))?;
         for (&i, xi) in cluster.iter().zip(x) {
@@ -159,13 +171,15 @@ fn totals(slots: &[Slot<1>], members: &[usize]) -> (usize, f64) {
     (members.len(), w)
 }
 
-/// The exact joint placement of `members` on [lo, hi]: a random order, then
-/// uniform gaps. Centres in member order; None if they do not fit.
+/// The exact joint placement of `members` on [lo, hi]: a random (or the
+/// alternating) order, then uniform gaps. Centres in member order; None if
+/// they do not fit.
 fn line_up(
     slots: &[Slot<1>],
     members: &[usize],
     lo: f64,
     hi: f64,
+    alternating: bool,
     rng: &mut ChaCha8Rng,
 ) -> Option<Vec<f64>> {
     let (_, occupied) = totals(slots, members);
@@ -173,8 +187,13 @@ fn line_up(
     if free < 0.0 {
         return None;
     }
-    let mut order: Vec<usize> = (0..members.len()).collect();
-    order.shuffle(rng);
+    let order = if alternating {
+        in_turn(slots, members)
+    } else {
+        let mut order: Vec<usize> = (0..members.len()).collect();
+        order.shuffle(rng);
+        order
+    };
     let mut gaps: Vec<f64> = members.iter().map(|_| free * rng.random::<f64>()).collect();
     gaps.sort_by(f64::total_cmp);
     let mut x = vec![0.0; members.len()];
@@ -187,6 +206,23 @@ fn line_up(
     Some(x)
 }
 
+/// Members (as indices into `members`) with the species taking turns in
+/// species order; a species that runs out drops out of the turn.
+fn in_turn(slots: &[Slot<1>], members: &[usize]) -> Vec<usize> {
+    let mut queues: Vec<Vec<usize>> = Vec::new();
+    for (m, &i) in members.iter().enumerate() {
+        let s = slots[i].species as usize;
+        if queues.len() <= s {
+            queues.resize(s + 1, Vec::new());
+        }
+        queues[s].push(m);
+    }
+    let longest = queues.iter().map(Vec::len).max().unwrap_or(0);
+    (0..longest)
+        .flat_map(|k| queues.iter().filter_map(move |q| q.get(k).copied()))
+        .collect()
+}
+
 /// Joint placements on the hull until one keeps every rod in its region and
 /// clear of the obstacle: exactly uniform over the allowed configurations.
 fn by_rejection(
@@ -194,10 +230,11 @@ fn by_rejection(
     members: &[usize],
     (lo, hi): (f64, f64),
     obstacle: Option<[f64; 2]>,
+    alternating: bool,
     rng: &mut ChaCha8Rng,
 ) -> Option<Vec<f64>> {
     for _ in 0..TRIES {
-        let x = line_up(slots, members, lo, hi, rng)?;
+        let x = line_up(slots, members, lo, hi, alternating, rng)?;
         let fits = members.iter().zip(&x).all(|(&i, &xi)| {
             let (r, s) = (slots[i].radius, &slots[i]);
             xi - r >= s.lo[0]

@@ -810,3 +810,49 @@ fn explicit_overlaps_are_found_as_the_engine_finds_them() {
         }
     }
 }
+
+/// `order = "alternating"` is one chain of rods: refused, by the checks, the
+/// builder and validation alike (at the key's line and column), in 2D, with
+/// unequal counts, with different regions, and with a piston; an order that
+/// does not exist names the ones that do.
+#[test]
+fn alternating_order_needs_one_chain_of_rods() {
+    let order = "placement = { kind = \"random\", order = \"alternating\" }\n";
+    let two = "species = [{ name = \"a\", count = 3, radius = 0.0 }, { name = \"b\", count = 3, radius = 0.0 }]\n";
+    let cases: Vec<(String, &str)> = vec![
+        (
+            format!("box = [10.0, 10.0]\n{two}{order}"),
+            "this scene is 2D",
+        ),
+        (
+            format!(
+                "box = [10.0]\nspecies = [{{ name = \"a\", count = 3 }}, {{ name = \"b\", count = 2 }}]\n{order}"
+            ),
+            "`a` has 3 and `b` has 2",
+        ),
+        (
+            format!(
+                "box = [10.0]\nspecies = [{{ name = \"a\", count = 3 }}, {{ name = \"b\", count = 3, region = {{ from = [0.5], to = [1.0] }} }}]\n{order}"
+            ),
+            "`a` and `b` have different regions",
+        ),
+        (
+            format!("box = [10.0]\n{two}piston = {{ mass = 5.0 }}\n{order}"),
+            "the piston cuts the line in two",
+        ),
+    ];
+    let leaked: Vec<Refused> = cases
+        .into_iter()
+        .map(|(scene, says)| refused(scene.leak(), "scene.placement.order", says))
+        .collect();
+    assert_refused_alike(&leaked);
+    let err = bonkers::descriptor::load::parse(
+        "s.toml",
+        &descriptor(&format!(
+            "box = [10.0]\n{two}placement = {{ kind = \"random\", order = \"zigzag\" }}\n"
+        )),
+    )
+    .expect_err("an unknown order is refused");
+    assert!(err.position.is_some(), "{err}");
+    assert!(err.to_string().contains("alternating"), "{err}");
+}

@@ -18,7 +18,7 @@ pub fn particles_fit(s: &SceneSpec) -> Check {
     let (limit, method, instead) = match (d, &s.placement) {
         (_, Some(Placement::Explicit { .. } | Placement::Lattice { .. })) => return Ok(()),
         (1, _) => (1.0, "", ""),
-        (_, None | Some(Placement::Random)) => (
+        (_, None | Some(Placement::Random { .. })) => (
             JAMMING[d - 2],
             "random insertion jams at",
             "use `placement = { kind = \"compress\" }` for dense fluids or `{ kind = \"lattice\" }` for crystals, or ",

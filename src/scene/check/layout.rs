@@ -53,14 +53,18 @@ fn at<const D: usize>(s: &SceneSpec) -> Check {
         periodic_room(&groups, &space)?;
     }
     let piston = s.piston.as_ref().map(|p| piston::at(p, size[0]));
-    let room = match s.placement.as_ref().unwrap_or(&Placement::Random) {
+    let room = match s
+        .placement
+        .as_ref()
+        .unwrap_or(&Placement::Random { order: None })
+    {
         Placement::Explicit { positions } => {
             return positions::positions(&species, positions, &space, piston);
         }
-        Placement::Random | Placement::Compress { .. } if D == 1 => {
+        Placement::Random { .. } | Placement::Compress { .. } if D == 1 => {
             rods::room(&on_line(&groups), piston.map(|p| p.extent()))
         }
-        Placement::Random => {
+        Placement::Random { .. } => {
             clear(&groups, piston, &names).and_then(|g| placement::room(&g, &space))
         }
         Placement::Compress { .. } => placement::room(&groups, &space),

@@ -11,6 +11,7 @@
 mod fit;
 mod layout;
 mod motion;
+mod order;
 mod piston;
 mod positions;
 mod species;
@@ -74,6 +75,7 @@ pub fn scene(s: &SceneSpec) -> Check {
     species::species(s)?;
     fit::particles_fit(s)?;
     placement(s)?;
+    order::order(s)?;
     motion::velocities(s)?;
     piston::piston(s)?;
     walls::thermal_walls(s)?;

@@ -4,7 +4,7 @@
 //! conducting heat from a hot to a cold wall across x.
 
 use crate::model::descriptor::Descriptor;
-use crate::model::scene::{Boundary, Side};
+use crate::model::scene::{Boundary, Placement, RodOrder, Side};
 use crate::scene::velocities::maxwell_temperature;
 use crate::theory::heat::{compressibility, exchange_rate, mean_free_path};
 use crate::theory::heat_free::FreeRelaxation;
@@ -23,6 +23,8 @@ pub struct Gas {
     pub walls: Vec<(usize, bool, f64)>,
     /// kT of a Maxwellian start (None for other velocity rules).
     pub start: Option<f64>,
+    /// Rods placed with the species in turn (`placement.order = "alternating"`).
+    pub alternating: bool,
 }
 
 /// What a run of the heat analysis is.
@@ -71,6 +73,12 @@ impl Gas {
             walled,
             walls,
             start,
+            alternating: matches!(
+                scene.placement,
+                Some(Placement::Random {
+                    order: Some(RodOrder::Alternating)
+                })
+            ),
         })
     }
 
