@@ -13,6 +13,7 @@ th,td{border:1px solid #ccc;padding:.25rem .5rem}th{background:#f2f2f2}\
 tr:nth-child(even) td{background:#fafafa}td.num,th.num{text-align:right}\
 code{background:#f4f4f4;padding:0 .2rem;border-radius:3px}\
 pre{background:#f4f4f4;padding:.6rem;overflow-x:auto}\
+blockquote{margin:1rem 0;padding:0 1rem;border-left:4px solid #ccc;color:#444}\
 figure{margin:1.2rem 0}figure svg{max-width:100%;height:auto}\
 figcaption{color:#555;font-size:.9rem}\
 .player{display:flex;gap:.6rem;align-items:center;max-width:720px}.player input{flex:1}h1,h2{border-bottom:1px solid #ddd}";
@@ -78,6 +79,7 @@ pub fn body(markdown: &str, out_dir: &Path) -> String {
             || t.starts_with("```")
             || heading(t).is_some()
             || t.starts_with('|')
+            || quoted(t).is_some()
             || list_item(t).is_some()
             || image(t).is_some();
         if block {
@@ -104,6 +106,19 @@ pub fn body(markdown: &str, out_dir: &Path) -> String {
                 .find(|&j| !lines[j].trim().starts_with('|'))
                 .unwrap_or(lines.len());
             html.push_str(&table(&lines[i..end]));
+            i = end;
+        } else if quoted(t).is_some() {
+            // The seeds' own words: a quote, its lines rendered as a body.
+            let end = (i..lines.len())
+                .find(|&j| quoted(lines[j].trim()).is_none())
+                .unwrap_or(lines.len());
+            let inner: Vec<&str> = lines[i..end]
+                .iter()
+                .map(|l| quoted(l.trim()).unwrap_or(""))
+                .collect();
+            html.push_str("<blockquote>\n");
+            html.push_str(&body(&inner.join("\n"), out_dir));
+            html.push_str("</blockquote>\n");
             i = end;
         } else if let Some((ordered, _)) = list_item(t) {
             let end = (i..lines.len())
@@ -134,6 +149,12 @@ fn flush(html: &mut String, para: &mut Vec<&str>) {
         html.push_str(&format!("<p>{}</p>\n", inline(&para.join(" "))));
         para.clear();
     }
+}
+
+/// A quoted line's text: "> text", or ">" alone (a paragraph break).
+fn quoted(t: &str) -> Option<&str> {
+    t.strip_prefix('>')
+        .map(|rest| rest.strip_prefix(' ').unwrap_or(rest))
 }
 
 fn heading(t: &str) -> Option<(usize, &str)> {
@@ -385,5 +406,15 @@ mod tests {
         assert!(html.contains("<th>a</th><th class=\"num\">b</th>"));
         assert!(html.contains("<td>x | y</td>"));
         assert!(html.contains("<ul>\n<li>one</li>\n<li>two</li>\n</ul>"));
+    }
+
+    #[test]
+    fn quotes_are_blockquotes() {
+        let md = "> What would happen\n> if *walls* were warmer?\n>\n> Second.\n\nAfter.";
+        let html = body(md, Path::new("."));
+        assert_eq!(
+            html,
+            "<blockquote>\n<p>What would happen if <em>walls</em> were warmer?</p>\n<p>Second.</p>\n</blockquote>\n<p>After.</p>\n"
+        );
     }
 }
