@@ -8,6 +8,7 @@ use super::section::{Runs, cost, stat, with_z};
 use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::report::Figure;
 use crate::stats::format::{count, num, pm};
+use crate::studies::mixing::line;
 use std::fmt::Write;
 
 /// Weighted least squares of y on x: (slope, its standard error), weights
@@ -23,23 +24,15 @@ pub fn power_fit_chi2(points: &[(f64, f64, f64)]) -> (f64, f64, f64) {
     if points.len() < 3 {
         return (f64::NAN, f64::NAN, f64::NAN);
     }
-    let (mut sw, mut sx, mut sy, mut sxx, mut sxy) = (0.0, 0.0, 0.0, 0.0, 0.0);
-    for &(x, y, sigma) in points {
-        let w = 1.0 / (sigma * sigma);
-        sw += w;
-        sx += w * x;
-        sy += w * y;
-        sxx += w * x * x;
-        sxy += w * x * y;
-    }
-    let det = sw * sxx - sx * sx;
-    let slope = (sw * sxy - sx * sy) / det;
-    let intercept = (sy - slope * sx) / sw;
+    let x: Vec<f64> = points.iter().map(|p| p.0).collect();
+    let y: Vec<f64> = points.iter().map(|p| p.1).collect();
+    let w: Vec<f64> = points.iter().map(|p| 1.0 / (p.2 * p.2)).collect();
+    let (slope, se, intercept) = line(&x, &y, Some(&w));
     let chi2 = points
         .iter()
         .map(|&(x, y, sigma)| ((y - intercept - slope * x) / sigma).powi(2))
         .sum();
-    (slope, (sw / det).sqrt(), chi2)
+    (slope, se, chi2)
 }
 
 /// Slopes of y on x between neighbouring points: the local exponents.
