@@ -8,6 +8,7 @@
 pub mod boundary;
 pub mod build;
 pub mod collide;
+mod contacts;
 pub mod dynamics;
 pub mod neighbours;
 pub mod observer;

@@ -277,6 +277,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
             samples_taken,
             sample_start,
             rng,
+            batch: super::contacts::Batch::new(),
             counts,
             observer,
         })

@@ -10,7 +10,8 @@ use rand_chacha::ChaCha8Rng;
 
 use super::boundary::{SimBox, Wall, wall_time};
 use super::build::{BuildError, check_overlaps, validate};
-use super::collide::{bounce, contact_time_before, line_contact_time};
+use super::collide::{bounce, line_contact_time};
+use super::contacts::{BATCH, Batch};
 use super::neighbours::{Image, Neighbourhood, PLANE, image_shift, no_shift, separation};
 use super::observer::{Observer, PairCollision, Snapshot, WallHit};
 use super::particle::Particle;
@@ -75,6 +76,8 @@ pub struct Simulation<const D: usize, N: Neighbourhood<D>, O: Observer<D>> {
     pub(super) samples_taken: u64,
     pub(super) sample_start: f64,
     pub(super) rng: ChaCha8Rng,
+    /// Room for a prediction's partners (kept to spare its setting up).
+    pub(super) batch: Batch<D>,
     pub counts: Counts,
     pub observer: O,
 }
@@ -112,6 +115,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             samples_taken: 0,
             sample_start: 0.0,
             rng: ChaCha8Rng::seed_from_u64(seed),
+            batch: Batch::new(),
             counts: Counts::default(),
             observer,
         };
@@ -378,32 +382,45 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             prefetch(&self.particles[j]);
         }
         let x_i = p.position_at(now);
-        for (j, image) in self.neighbours.candidates(i) {
-            let q = &self.particles[j];
-            let r = separation(&x_i, &q.position_at(now), image, &self.shifts, N::PLANES);
-            let v = sub(&q.vel, &p.vel);
-            // A plane moves along axis 0 only, and only that part of the
-            // other's motion brings them together.
-            let v = if N::PLANES && image == PLANE {
-                axis0(&v)
-            } else {
-                v
-            };
-            let sigma = p.radius + q.radius;
-            let dt = if D == 1 {
-                line_contact_time(r[0], -v[0], line_side(i, j, image), sigma)
-            } else {
-                contact_time_before(&r, &v, sigma, best_t - now)
-            };
-            if let Some(dt) = dt {
-                let t = now + dt;
-                if t < best_t {
+        if D == 1 {
+            for (j, image) in self.neighbours.candidates(i) {
+                let q = &self.particles[j];
+                let gap = q.position_at(now)[0] + self.shifts[image as usize][0] - x_i[0];
+                let dt = line_contact_time(
+                    gap,
+                    p.vel[0] - q.vel[0],
+                    line_side(i, j, image),
+                    p.radius + q.radius,
+                );
+                if let Some(t) = dt.map(|dt| now + dt)
+                    && t < best_t
+                {
                     best_t = t;
-                    best = Next::Pair {
-                        j: j as u32,
-                        stamp: self.stamp[j],
-                        image,
+                    best = pair_with(j, image, &self.stamp);
+                }
+            }
+        } else {
+            let batch = &mut self.batch;
+            let mut partners = [(0, 0); BATCH];
+            let mut left = self.neighbours.candidates(i).peekable();
+            while left.peek().is_some() {
+                batch.clear();
+                for (m, (j, image)) in left.by_ref().take(BATCH).enumerate() {
+                    let q = &self.particles[j];
+                    let r = separation(&x_i, &q.position_at(now), image, &self.shifts, N::PLANES);
+                    let v = sub(&q.vel, &p.vel);
+                    // A plane moves along axis 0 only, and only that part of
+                    // the other's motion brings them together.
+                    let v = if N::PLANES && image == PLANE {
+                        axis0(&v)
+                    } else {
+                        v
                     };
+                    batch.push(&r, &v, p.radius + q.radius);
+                    partners[m] = (j, image);
+                }
+                if let Some(m) = batch.earliest(now, &mut best_t) {
+                    best = pair_with(partners[m].0, partners[m].1, &self.stamp);
                 }
             }
         }
@@ -480,6 +497,16 @@ pub fn degrees_of_freedom<const D: usize>(particles: &[Particle<D>], sim_box: &S
         sim_box.axes.iter().filter(|a| a.is_periodic()).count()
     };
     free.saturating_sub(conserved) as f64
+}
+
+/// A collision with j as it is now (its stamp read from `stamps`).
+#[inline(always)]
+fn pair_with(j: usize, image: Image, stamps: &[u32]) -> Next {
+    Next::Pair {
+        j: j as u32,
+        stamp: stamps[j],
+        image,
+    }
 }
 
 /// In 1D: +1 if j is i's right-hand neighbour in the chain, -1 if left

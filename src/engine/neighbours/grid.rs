@@ -95,9 +95,10 @@ impl<const D: usize> Grid<D> {
         self.cells[cell].push((i as u32, *x));
     }
 
-    /// Call `f(j, image, x_j)` for every point j (at x_j) filed in the 3^D
-    /// cells around position `x` (x itself may be filed there too).
-    pub fn for_each_near(&self, x: &Vector<D>, mut f: impl FnMut(usize, Image, &Vector<D>)) {
+    /// Call `f(image, points)` for each of the 3^D cells around position `x`
+    /// (x itself may be filed there too): its points, each with where it
+    /// is, and the image code they are seen through.
+    pub fn for_each_cell_near(&self, x: &Vector<D>, mut f: impl FnMut(Image, &[(u32, Vector<D>)])) {
         let (near, count) = self.cells_near(x);
         // Each cell's points lie elsewhere in memory: ask for all of them
         // first, so that their cache misses overlap (see prefetch.rs).
@@ -108,9 +109,7 @@ impl<const D: usize> Grid<D> {
             }
         }
         for &(cell, image) in &near[..count] {
-            for (j, x_j) in &self.cells[cell] {
-                f(*j as usize, image, x_j);
-            }
+            f(image, &self.cells[cell]);
         }
     }
 

@@ -30,8 +30,9 @@ use crate::engine::vector::{Vector, axis0, dot, norm2, sub};
 /// A list entry packs a particle index and an image code: `j << 5 | image`.
 const IMAGE_BITS: u32 = 5;
 const MAX_PARTICLES: usize = 1 << (32 - IMAGE_BITS);
-/// The shell in ideal-gas mean free paths (tuned on the benchmark systems).
-const SHELL_PER_FREE_PATH: f64 = 0.8;
+/// The shell in ideal-gas mean free paths (tuned on the benchmark systems:
+/// see docs/performance.md).
+const SHELL_PER_FREE_PATH: f64 = 1.0;
 
 #[inline(always)]
 fn pack(j: usize, image: Image) -> u32 {
@@ -197,10 +198,19 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
                     }
                 });
         } else {
-            self.grid.for_each_near(c, |j, image, c_j| {
-                if j != i && self.overlap(i, image, c_j) {
-                    found.push(pack(j, image));
+            // Most points tested are not neighbours, at random: write every
+            // one and keep it or not without a branch that would mispredict.
+            let reach2 = self.reach * self.reach;
+            self.grid.for_each_cell_near(c, |image, points| {
+                let s = &self.shifts[image as usize];
+                let mut kept = found.len();
+                found.resize(kept + points.len(), 0);
+                for &(j, c_j) in points {
+                    let r: Vector<D> = std::array::from_fn(|k| c_j[k] + s[k] - c[k]);
+                    found[kept] = pack(j as usize, image);
+                    kept += (j as usize != i && norm2(&r) < reach2) as usize;
                 }
+                found.truncate(kept);
             });
             if let Some(k) = self.plane.filter(|_| PLANES)
                 && self.overlap(i, PLANE, &self.centre[k])
