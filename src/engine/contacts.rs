@@ -20,6 +20,8 @@ pub struct Batch<const D: usize> {
     r: [[f64; BATCH]; D],
     v: [[f64; BATCH]; D],
     sigma: [f64; BATCH],
+    /// When each partner's own next event is due.
+    due: [f64; BATCH],
     b: [f64; BATCH],
     c: [f64; BATCH],
     dt: [f64; BATCH],
@@ -32,6 +34,7 @@ impl<const D: usize> Batch<D> {
             r: [[0.0; BATCH]; D],
             v: [[0.0; BATCH]; D],
             sigma: [0.0; BATCH],
+            due: [0.0; BATCH],
             b: [0.0; BATCH],
             c: [0.0; BATCH],
             dt: [0.0; BATCH],
@@ -45,13 +48,14 @@ impl<const D: usize> Batch<D> {
     /// Add a partner at separation `r` (from the particle to it) with
     /// relative velocity `v` (its velocity less the particle's).
     #[inline(always)]
-    pub fn push(&mut self, r: &Vector<D>, v: &Vector<D>, sigma: f64) {
+    pub fn push(&mut self, r: &Vector<D>, v: &Vector<D>, sigma: f64, due: f64) {
         let m = self.len;
         for k in 0..D {
             self.r[k][m] = r[k];
             self.v[k][m] = v[k];
         }
         self.sigma[m] = sigma;
+        self.due[m] = due;
         self.len += 1;
     }
 
@@ -100,19 +104,24 @@ impl<const D: usize> Batch<D> {
     }
 
     /// The first partner (in the order pushed) whose contact comes before
-    /// `*best_t`, lowering `*best_t` as it goes, exactly as a loop calling
-    /// `contact_time_before(r, v, sigma, *best_t - now)` per partner would:
-    /// that function also turns down a partner whose time it can bound below
-    /// by the limit without computing it (c >= 2|b| limit), which decides
-    /// differently only when round-off puts the time within an ulp of the
-    /// limit, so the same test is applied here to the rare winners.
+    /// `*best_t` and before the partner's own next event, lowering `*best_t`
+    /// as it goes. A partner whose own event comes first is passed over: that
+    /// event will change it (or re-predict it) and it will then look for this
+    /// particle itself, so a pair's contact is always scheduled on one side
+    /// or the other in time, and no prediction waits on a partner already
+    /// due to change (a stale event). Times are those of
+    /// `contact_time_before(r, v, sigma, *best_t - now)`: that function also
+    /// turns down a partner whose time it can bound below by the limit
+    /// without computing it (c >= 2|b| limit), which decides differently only
+    /// when round-off puts the time within an ulp of the limit, so the same
+    /// test is applied here to the rare winners.
     #[inline(always)]
     pub fn earliest(&mut self, now: f64, best_t: &mut f64) -> Option<usize> {
         self.all_contact_times();
         let mut found = None;
         for m in 0..self.len {
             let t = now + self.dt[m];
-            if t < *best_t {
+            if t < *best_t && t < self.due[m] {
                 let (b, c) = (self.b[m], self.c[m]);
                 if c > 0.0 && c >= -2.0 * b * (*best_t - now) {
                     continue;

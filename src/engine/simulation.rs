@@ -1,9 +1,12 @@
 //! The event loop. Each particle has exactly one scheduled event: the earliest
 //! of its next collision, wall hit or neighbourhood renewal. Repeatedly: take the
 //! earliest event in the queue, move the particles it involves to that time,
-//! apply it, and predict new events for those particles. A collision predicted
-//! with a partner that has since had an event of its own is stale and is
-//! simply re-predicted (each particle carries an event stamp).
+//! apply it, and predict new events for those particles. In 2D and 3D a
+//! prediction passes over a partner whose own event comes first: that partner
+//! will look again when its event is done, so for every pair the earlier of
+//! the two scheduled events is never later than the pair's contact. A
+//! collision predicted with a partner that has since collided with a third is
+//! stale and is simply re-predicted (each particle carries an event stamp).
 
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -416,7 +419,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                     } else {
                         v
                     };
-                    batch.push(&r, &v, p.radius + q.radius);
+                    batch.push(&r, &v, p.radius + q.radius, self.queue.time_of(j));
                     partners[m] = (j, image);
                 }
                 if let Some(m) = batch.earliest(now, &mut best_t) {
