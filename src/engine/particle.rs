@@ -14,16 +14,19 @@ pub enum Shape {
     Plane,
 }
 
+/// Laid out so that what a prediction reads of a partner (position,
+/// velocity, time, radius) comes first, within 64 bytes in 3D.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[repr(C)]
 pub struct Particle<const D: usize> {
     /// Position at time `t`.
     pub pos: Vector<D>,
     pub vel: Vector<D>,
     /// The time at which `pos` holds.
     pub t: f64,
+    pub radius: f64,
     /// 1/m; 0 means immovable (infinitely massive, like the seeds' walls).
     pub inv_mass: f64,
-    pub radius: f64,
     pub species: u16,
     pub shape: Shape,
 }

@@ -11,6 +11,9 @@ use crate::engine::vector::Vector;
 
 const NONE: u32 = u32::MAX;
 
+/// A cell's points: each one's index and where it is.
+pub type Points<const D: usize> = [(u32, Vector<D>)];
+
 #[derive(Debug, Clone)]
 pub struct Grid<const D: usize> {
     n: [u32; D],
@@ -95,22 +98,23 @@ impl<const D: usize> Grid<D> {
         self.cells[cell].push((i as u32, *x));
     }
 
-    /// Call `f(image, points)` for each of the 3^D cells around position `x`
-    /// (x itself may be filed there too): its points, each with where it
-    /// is, and the image code they are seen through.
-    pub fn for_each_cell_near(&self, x: &Vector<D>, mut f: impl FnMut(Image, &[(u32, Vector<D>)])) {
+    /// The (up to) 3^D cells around position `x` (x itself may be filed
+    /// there too), and how many there are: each one's points, with where
+    /// they are, and the image code they are seen through.
+    pub fn cells_around(&self, x: &Vector<D>) -> ([(Image, &Points<D>); 27], usize) {
         let (near, count) = self.cells_near(x);
-        // Each cell's points lie elsewhere in memory: ask for all of them
-        // first, so that their cache misses overlap (see prefetch.rs).
-        for &(cell, _) in &near[..count] {
-            if let (Some(first), Some(last)) = (self.cells[cell].first(), self.cells[cell].last()) {
+        let mut cells: [(Image, &Points<D>); 27] = [(0, &[]); 27];
+        for (slot, &(cell, image)) in cells.iter_mut().zip(&near[..count]) {
+            let points = &self.cells[cell][..];
+            // Each cell's points lie elsewhere in memory: ask for all of them
+            // first, so that their cache misses overlap (see prefetch.rs).
+            if let (Some(first), Some(last)) = (points.first(), points.last()) {
                 prefetch(first);
                 prefetch(last);
             }
+            *slot = (image, points);
         }
-        for &(cell, image) in &near[..count] {
-            f(image, &self.cells[cell]);
-        }
+        (cells, count)
     }
 
     /// The (up to) 3^D cells around position `x` (D <= 3): each one's linear

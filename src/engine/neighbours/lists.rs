@@ -201,17 +201,19 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
             // Most points tested are not neighbours, at random: write every
             // one and keep it or not without a branch that would mispredict.
             let reach2 = self.reach * self.reach;
-            self.grid.for_each_cell_near(c, |image, points| {
+            let (cells, count) = self.grid.cells_around(c);
+            let cells = &cells[..count];
+            found.resize(cells.iter().map(|(_, points)| points.len()).sum(), 0);
+            let mut kept = 0;
+            for &(image, points) in cells {
                 let s = &self.shifts[image as usize];
-                let mut kept = found.len();
-                found.resize(kept + points.len(), 0);
                 for &(j, c_j) in points {
                     let r: Vector<D> = std::array::from_fn(|k| c_j[k] + s[k] - c[k]);
                     found[kept] = pack(j as usize, image);
                     kept += (j as usize != i && norm2(&r) < reach2) as usize;
                 }
-                found.truncate(kept);
-            });
+            }
+            found.truncate(kept);
             if let Some(k) = self.plane.filter(|_| PLANES)
                 && self.overlap(i, PLANE, &self.centre[k])
             {
