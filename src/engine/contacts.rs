@@ -41,6 +41,10 @@ impl<const D: usize> Batch<D> {
         }
     }
 
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
     pub fn clear(&mut self) {
         self.len = 0;
     }

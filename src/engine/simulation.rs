@@ -405,26 +405,29 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         } else {
             let batch = &mut self.batch;
             let mut partners = [(0, 0); BATCH];
-            let mut left = self.neighbours.candidates(i).peekable();
-            while left.peek().is_some() {
-                batch.clear();
-                for (m, (j, image)) in left.by_ref().take(BATCH).enumerate() {
-                    let q = &self.particles[j];
-                    let r = separation(&x_i, &q.position_at(now), image, &self.shifts, N::PLANES);
-                    let v = sub(&q.vel, &p.vel);
-                    // A plane moves along axis 0 only, and only that part of
-                    // the other's motion brings them together.
-                    let v = if N::PLANES && image == PLANE {
-                        axis0(&v)
-                    } else {
-                        v
-                    };
-                    batch.push(&r, &v, p.radius + q.radius, self.queue.time_of(j));
-                    partners[m] = (j, image);
+            batch.clear();
+            for (j, image) in self.neighbours.candidates(i) {
+                let q = &self.particles[j];
+                let r = separation(&x_i, &q.position_at(now), image, &self.shifts, N::PLANES);
+                let v = sub(&q.vel, &p.vel);
+                // A plane moves along axis 0 only, and only that part of the
+                // other's motion brings them together.
+                let v = if N::PLANES && image == PLANE {
+                    axis0(&v)
+                } else {
+                    v
+                };
+                partners[batch.len()] = (j, image);
+                batch.push(&r, &v, p.radius + q.radius, self.queue.time_of(j));
+                if batch.len() == BATCH {
+                    if let Some(m) = batch.earliest(now, &mut best_t) {
+                        best = pair_with(partners[m].0, partners[m].1, &self.stamp);
+                    }
+                    batch.clear();
                 }
-                if let Some(m) = batch.earliest(now, &mut best_t) {
-                    best = pair_with(partners[m].0, partners[m].1, &self.stamp);
-                }
+            }
+            if let Some(m) = batch.earliest(now, &mut best_t) {
+                best = pair_with(partners[m].0, partners[m].1, &self.stamp);
             }
         }
         self.next[i] = best;
