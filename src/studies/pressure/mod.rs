@@ -13,6 +13,7 @@ mod measure;
 mod packing;
 mod phases;
 mod points;
+mod rods;
 mod section;
 
 use super::{Finished, Start, Study};
@@ -37,6 +38,7 @@ pub const RESULTS: &[&str] = &[
     "Z_block_stderr",
     "block_time",
     "block_doubling",
+    "Z_run_stderr",
     "Z_drift",
 ];
 
@@ -73,6 +75,7 @@ impl Study for Pressure {
             m.block_stderr,
             m.block_time,
             m.block_doubling,
+            m.run_stderr,
             m.drift,
         ];
         for (name, v) in RESULTS.iter().zip(values) {

@@ -8,7 +8,7 @@ use super::charts::{self, NAMES};
 use super::equations::{self, Equation};
 use super::finite_size::{self, Fit};
 use super::phases;
-use super::points::{self, MIN_REPLICAS, Point};
+use super::points::{self, Point};
 use crate::model::report::{Figure, ReportSection};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
@@ -167,7 +167,7 @@ fn headline(all: &[Point]) -> String {
 fn table(d: usize, pts: &[&Point]) -> String {
     let eqs = equations::of(d);
     let mut md = format!(
-        "\n### {}\n\n| η | N | start | phase | Z | error from | rel. error | block error (block; ×2 ratio) | discarded | MSER cut | max \\|drift\\| |",
+        "\n### {}\n\n| η | N | start | phase | Z | error from | rel. error | runs' own error (block; ×2 ratio) | discarded | MSER cut | max \\|drift\\| |",
         NAMES[d - 1]
     );
     for e in eqs {
@@ -210,8 +210,16 @@ fn table(d: usize, pts: &[&Point]) -> String {
     md
 }
 
-/// "±s (t; r)": the block-average error, block length and doubling ratio.
+/// "±s (t; r)": the block-average error, block length and doubling ratio;
+/// for rods the wall-hit model's error instead.
 fn block(p: &Point) -> String {
+    if p.run_basis == "wall hits" && p.run_stderr.is_finite() {
+        return format!(
+            "±{} (wall hits; blocks ±{}, not valid here)",
+            num(p.run_stderr),
+            num(p.block_stderr)
+        );
+    }
     if !p.block_stderr.is_finite() {
         return "–".into();
     }
@@ -260,8 +268,13 @@ fn note(eqs: &[Equation], p: &Point) -> String {
             num(p.drift)
         ));
     }
-    if p.z.n < MIN_REPLICAS {
-        notes.push("few replicas: block error used".into());
+    let (_, from) = p.error();
+    if from != "replicas" {
+        notes.push(format!(
+            "the {} replicas scatter less than their runs' own error ({}): that error used",
+            p.z.n,
+            num(p.z.stderr)
+        ));
     }
     notes.join("; ")
 }
@@ -433,13 +446,18 @@ that minimises the variance of the remaining mean (`MSER cut`, mean time over th
 noise). Equilibrium is then judged by the drift: the mean of the second half of the kept series minus the first, \
 in units of its block error bar; it is about N(0, 1) when the run is stationary, and a point whose largest \
 |drift| over its replicas exceeds 4 is flagged. \
-**Error bars.** Z of a run is the mean over its kept intervals. The point's error bar is the standard error over \
-its independent replicas (each its own start and velocities: `error from` says `replicas (n)`); with fewer than \
-4 replicas it is the block-average error instead. The block error is shown beside it for every point: the \
-kept series is cut into blocks of 1, 2, 4, ... intervals and the first block length whose doubling no longer \
-raises the estimate beyond its own statistical error is used (Flyvbjerg and Petersen 1989); the column gives \
-the block length in time and the ratio of the estimate at twice that length (about 1 on a plateau; `no \
-plateau`: the series was too short to show one, and the block error is then a lower bound). \
+**Error bars.** Z of a run is the mean over its kept intervals. Each run also has its own error: the \
+block-average error of its series (Flyvbjerg and Petersen 1989: the kept series is cut into blocks of 1, 2, 4, \
+... intervals and the first block length whose doubling no longer raises the estimate beyond its own \
+statistical error is used; the column gives the block length in time and the ratio of the estimate at twice \
+that length, about 1 on a plateau, `no plateau` when the series was too short to show one and the block \
+error is a lower bound). For rods the block error does not apply: equal rods swap velocities, so each speed \
+hits the walls periodically and the mean converges as 1/T, not 1/√T; their own error is the exact wall-hit \
+phase noise, σ_Z = (L/T)√(m/12K) per run. The point's error bar is the standard error over its independent \
+replicas (each its own start and velocities) when there are at least 16; with fewer it is the larger of that \
+and the runs' own error combined, because a standard error from n replicas is itself uncertain by \
+1/√(2(n − 1)) (41 % for 4), and 4 replicas that happen to agree closely give z-scores of 5 or more about 1 % of \
+the time. `error from` says which was used, and with how many replicas. \
 **Theory**: rods, Tonks 1936 (exact). Disks, the virial series with the coefficients up to B10 of Clisby and \
 McCoy 2006 (J. Stat. Phys. 122, 15; B3 and B4 exact) plus the terms left out continued geometrically (5e-5 of Z \
 at η = 0.3, 7e-4 at 0.4), and Henderson 1975, Z = (1 + η²/8)/(1 − η)², 2.5e-4 above the series at 0.3. Spheres, \
