@@ -43,7 +43,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
             &mut md,
             "pressure_deviation.svg",
             charts::deviation_chart(&all),
-            "Z over each dimension's reference equation (Tonks, the disks' virial series with its tail, Carnahan-Starling-Kolafa), minus 1, at the points where it holds; dashed: the other equations against the same reference. The points are at finite N: see the 1/N extrapolation",
+            "Z over each dimension's reference equation (Tonks, the disks' virial series with its tail, Hansen-Goos), minus 1, at the points where it holds; dashed: the other equations against the same reference. The points are at finite N: see the 1/N extrapolation",
         );
         let examples = time_examples(&all);
         if !examples.is_empty() {
@@ -436,7 +436,7 @@ same N and V. With kT = 2K/(d(N − 1)) the mean squared relative velocity of a 
 is left is the canonical finite-size effect of a periodic box whose N is fixed, of order 1/N (the full study \
 measured −0.76/N for disks and −1.1/N for spheres at η = 0.3): the study measures Z at several N and \
 extrapolates. This, not the equations or the statistics, is why the spheres at η = 0.3 and N = 256 sit about \
-0.14 % below Carnahan-Starling-Kolafa. \
+0.1 % below Hansen-Goos. \
 **Starts and equilibration.** Rods start from the exact equilibrium distribution (uniform gaps) and nothing is \
 discarded. Dilute disks and spheres start from random insertion; dense ones (disks from η = 0.5, spheres from \
 0.3) from Lubachevsky-Stillinger compression, never random insertion. Each run then discards the time in \
@@ -460,10 +460,14 @@ and the runs' own error combined, because a standard error from n replicas is it
 the time. `error from` says which was used, and with how many replicas. \
 **Theory**: rods, Tonks 1936 (exact). Disks, the virial series with the coefficients up to B10 of Clisby and \
 McCoy 2006 (J. Stat. Phys. 122, 15; B3 and B4 exact) plus the terms left out continued geometrically (5e-5 of Z \
-at η = 0.3, 7e-4 at 0.4), and Henderson 1975, Z = (1 + η²/8)/(1 − η)², 2.5e-4 above the series at 0.3. Spheres, \
-Carnahan-Starling-Kolafa (Boublík and Nezbeda 1986), Z = (1 + η + η² − ⅔(η³ + η⁴))/(1 − η)³, within 6e-5 of the \
-spheres' virial series to B10 with its tail at 0.3; that series itself; and Carnahan-Starling, \
-(1 + η + η² − η³)/(1 − η)³, which is 0.27 % low at 0.3. The `note` column flags points beyond where an equation \
+at η = 0.3, 7e-4 at 0.4), and Henderson 1975, Z = (1 + η²/8)/(1 − η)², 2.5e-4 above the series at 0.3; no \
+accurate published fit for the dense disk fluid (Kolafa and Rottner 2006) could be checked here, so points \
+from 0.5 on have no reference equation. Spheres, Hansen-Goos 2016 (J. Chem. Phys. 144, 164506), \
+Z = 8 ln(1 − η)/η + p(η)/(1 − η)³ with a degree-7 polynomial p built on the virial coefficients and fitted to \
+the fluid's simulations: its expansion gives B2-B4 exactly and B5-B10 within 0.4 %; Carnahan-Starling-Kolafa \
+(Boublík and Nezbeda 1986), Z = (1 + η + η² − ⅔(η³ + η⁴))/(1 − η)³, within 1e-4 of it up to 0.4; the spheres' \
+virial series to B10 with its tail; and Carnahan-Starling, (1 + η + η² − η³)/(1 − η)³, which is 0.25 % low at \
+0.3. The `note` column flags points beyond where an equation \
 is expected to be within ~1e-3 of the fluid's Z, and points where the fluid is not the stable phase: disks \
 above 0.700 (fluid-hexatic coexistence to 0.716, hexatic to 0.720, solid above; Bernard and Krauth 2011), \
 spheres above freezing at 0.494 (coexistence to 0.545, crystal above).\n";
