@@ -205,4 +205,24 @@ pub(super) mod tests {
             example: None,
         }
     }
+
+    #[test]
+    fn few_replicas_that_agree_by_luck_do_not_set_the_error() {
+        // 4 replicas scattering 5x less than their runs' own error: the
+        // runs' error is used; more scatter than it: the replicas'.
+        let mut p = point(2, 256, 0.3, 2.06, 0.0005);
+        p.z.n = 4;
+        p.run_stderr = 0.0025;
+        assert_eq!(p.error(), (0.0025, "blocks"));
+        p.run_stderr = 0.0001;
+        assert_eq!(p.error(), (0.0005, "replicas"));
+        // From 16 replicas their spread is the error bar whatever the runs say.
+        p.z.n = 16;
+        p.run_stderr = 0.0025;
+        assert_eq!(p.error(), (0.0005, "replicas"));
+        // Without a run error (a scalar-only run), the replicas'.
+        p.z.n = 4;
+        p.run_stderr = f64::NAN;
+        assert_eq!(p.error(), (0.0005, "replicas"));
+    }
 }

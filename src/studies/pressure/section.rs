@@ -69,7 +69,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
             &mut md,
             "pressure_dense_disks.svg",
             charts::dense_disks_chart(&dense),
-            "The pressure βPσ² = Zρ of the disks near the liquid-hexatic transition (mean ± error bar); dashed: the fluid's virial series, continued beyond its range",
+            "The pressure βPσ² = Zρ of the disks near the liquid-hexatic transition (mean ± error bar; dashed: joining the means). Where it falls as η grows is the finite box's loop (see the table below)",
         );
     }
     md.push_str(&headline(&all));
@@ -362,7 +362,9 @@ fn finite_size_table(fits: &[Fit]) -> String {
 }
 
 /// Whether the dense disks' pressure falls anywhere as the density grows
-/// (the finite-size loop of the liquid-hexatic coexistence), and by how much.
+/// (the finite-size loop of the liquid-hexatic coexistence), and by how
+/// much: the loop's height is the largest fall of βPσ² from a point to a
+/// denser one, with the two points' errors combined.
 fn loop_text(pts: &[&Point]) -> String {
     let rho = |eta: f64| 4.0 * eta / std::f64::consts::PI;
     let p = |q: &Point| (q.z.mean * rho(q.eta), q.error().0 * rho(q.eta));
@@ -383,19 +385,43 @@ fn loop_text(pts: &[&Point]) -> String {
          With {n} disks in a periodic box the fluid and the hexatic phase cannot coexist as in a large system: \
          the interface between them costs free energy that a small box cannot dilute, and the pressure \
          against density has a loop (a stretch where it falls as the density grows) in the coexistence range \
-         0.700-0.716 (Bernard and Krauth 2011). "
+         0.700-0.716 (Bernard and Krauth 2011); it shrinks as N grows and vanishes for an infinite system \
+         (Engel et al. 2013). Each point below started from a compression to its density, discarded the \
+         time in `discarded`, and was then tested for drift (second half of each run against the first, in \
+         block errors) after the MSER cut.\n\n\
+         | η | phase | βPσ² | error from | discarded | MSER cut | max \\|drift\\| | CPU s |\n|---|---|---|---|---|---|---|---|\n"
     );
+    for q in pts {
+        let (v, e) = p(q);
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} ({}) | {} | {} | {} | {} |",
+            num(q.eta),
+            phases::label(2, q.eta),
+            pm(v, e),
+            q.error().1,
+            q.z.n,
+            num(q.equilibrate),
+            num(q.cut),
+            num(q.drift),
+            num(q.cpu_seconds)
+        );
+    }
+    md.push('\n');
     match best {
         Some((i, j, drop, err)) => {
             let _ = write!(
                 md,
-                "Here βPσ² falls from {} at η = {} to {} at η = {}: by {} ({} error bars).",
+                "**Loop height.** βPσ² falls from {} at η = {} to {} at η = {}: the loop is {} high, {} standard \
+                 errors above the noise (the largest fall between any two of the {} points, so a pure-noise curve \
+                 would show a fall of a standard error or two).",
                 pm(p(pts[i]).0, p(pts[i]).1),
                 num(pts[i].eta),
                 pm(p(pts[j]).0, p(pts[j]).1),
                 num(pts[j].eta),
                 pm(drop, err),
-                num(drop / err)
+                num(drop / err),
+                pts.len()
             );
         }
         None => md.push_str("Here βPσ² rises at every step: no loop is resolved."),
