@@ -324,7 +324,8 @@ fn finite_size_table(fits: &[Fit]) -> String {
          Each row fits Z(N) = Z∞ + b/N to the points of one packing fraction, weighted by their error bars, \
          and compares Z∞ with the reference equation (and the others). At low density b → −B₂ρ (−2η for disks, \
          −4η for spheres): each particle of a periodic box sees N − 1 others, so the pair term of Z is (N − 1)/N \
-         of the infinite system's.\n\n\
+         of the infinite system's. The line is the leading term: where the smallest box already shows the next \
+         one (the line's χ² beyond its 99 % point) it is left out and the line refitted, as the χ² column says.\n\n\
          | dimension | η | points (N: Z) | Z∞ | b | χ² (dof) | equations (z of Z∞) |\n|---|---|---|---|---|---|---|\n",
     );
     for f in fits {
@@ -345,11 +346,18 @@ fn finite_size_table(fits: &[Fit]) -> String {
                 )
             })
             .collect();
-        let chi2 = if f.dof > 0 {
+        let mut chi2 = if f.dof > 0 {
             format!("{} ({})", num(f.chi2), f.dof)
         } else {
             "– (0)".into()
         };
+        for (n, c, dof) in &f.left_out {
+            let _ = write!(
+                chi2,
+                "; N = {n} left out (the line through it: χ² {} for {dof}, beyond its 99 % point)",
+                num(*c)
+            );
+        }
         let _ = writeln!(
             md,
             "| {} | {} | {} | {} | {} | {chi2} | {} |",
