@@ -6,6 +6,7 @@ pub mod carnahan_starling_kolafa;
 pub mod disk_virial;
 pub mod expansion;
 pub mod expansion_rods;
+pub mod hansen_goos;
 pub mod heat;
 pub mod heat_free;
 pub mod henderson;

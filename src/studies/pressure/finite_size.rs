@@ -10,8 +10,14 @@
 //! (N - 1) kT instead of N kT, is corrected in `measure`. What is left is
 //! the canonical finite-size effect of a periodic box of fixed N, whose
 //! density cannot fluctuate on the box's scale: of order 1/N.
+//!
+//! The straight line is the leading term. When the smallest box already
+//! shows the next one (the line's χ² beyond its 99 % point), that box is
+//! left out and the line refitted through the larger ones; the report says
+//! which and gives the χ² it had.
 
 use super::points::Point;
+use statrs::distribution::{ChiSquared, ContinuousCDF};
 
 /// One group's fit.
 pub struct Fit {
@@ -26,6 +32,15 @@ pub struct Fit {
     /// Chi-squared and degrees of freedom (0 for two points).
     pub chi2: f64,
     pub dof: usize,
+    /// Smaller boxes left out, each with the χ² and dof of the line that
+    /// still included it.
+    pub left_out: Vec<(usize, f64, usize)>,
+}
+
+/// Whether a line with this χ² over `dof` degrees of freedom is rejected
+/// at the 1 % level.
+fn rejected(chi2: f64, dof: usize) -> bool {
+    dof > 0 && ChiSquared::new(dof as f64).is_ok_and(|d| chi2 > d.inverse_cdf(0.99))
 }
 
 /// Packing fractions closer than this are the same (box lengths are
@@ -48,7 +63,18 @@ pub fn fits(points: &[Point]) -> Vec<Fit> {
         .filter_map(|mut g| {
             g.sort_by_key(|p| p.particles);
             g.dedup_by_key(|p| p.particles);
-            (g.len() >= 2).then(|| fit(&g))
+            if g.len() < 2 {
+                return None;
+            }
+            let mut left_out = Vec::new();
+            let mut f = fit(&g);
+            while g.len() > 2 && rejected(f.chi2, f.dof) {
+                left_out.push((g[0].particles, f.chi2, f.dof));
+                g.remove(0);
+                f = fit(&g);
+            }
+            f.left_out = left_out;
+            Some(f)
         })
         .collect()
 }
@@ -85,6 +111,7 @@ fn fit(g: &[&Point]) -> Fit {
         chi2,
         dof: data.len() - 2,
         data,
+        left_out: Vec::new(),
     }
 }
 
@@ -104,5 +131,28 @@ mod tests {
         // Extrapolated error: (16/15) of the large box's, with the small's.
         let expected = 1e-3 * ((16.0f64 / 15.0).powi(2) + (1.0f64 / 15.0).powi(2)).sqrt();
         assert!((f[0].z_inf_err / expected - 1.0).abs() < 1e-9);
+        assert!(f[0].left_out.is_empty());
+    }
+
+    #[test]
+    fn a_small_box_off_the_line_is_left_out() {
+        // Z(N) = 2 - 0.7/N - 150/N^2: the line through all three has
+        // chi2 = 16 for 1 dof; the line through 256 and 1024 is kept.
+        let z = |n: f64| 2.0 - 0.7 / n - 150.0 / (n * n);
+        let pts: Vec<super::Point> = [64usize, 256, 1024]
+            .iter()
+            .map(|&n| super::super::points::tests::point(2, n, 0.3, z(n as f64), 1e-3))
+            .collect();
+        let f = super::fits(&pts);
+        assert_eq!(f[0].left_out.len(), 1);
+        assert_eq!(f[0].left_out[0].0, 64);
+        assert_eq!(f[0].data.len(), 2);
+        assert!((f[0].z_inf - 2.0).abs() < 6e-4, "{}", f[0].z_inf);
+        // Within the noise the line through all three is kept.
+        let pts: Vec<super::Point> = [64usize, 256, 1024]
+            .iter()
+            .map(|&n| super::super::points::tests::point(2, n, 0.3, z(n as f64), 1e-2))
+            .collect();
+        assert!(super::fits(&pts)[0].left_out.is_empty());
     }
 }

@@ -20,8 +20,11 @@
 //! With the pressure series (`[observe] series`), Z is the mean over the
 //! sampling intervals left after the MSER cut (`equilibration`), with a
 //! block-average error bar (`blocks`); without, it is the run's scalar.
+//! The run's own error estimate is that block error, except for equal
+//! rods between walls, whose error the wall-hit phases give exactly
+//! (`rods`) and where block averages overstate it.
 
-use super::{blocks, equilibration, packing};
+use super::{blocks, equilibration, packing, rods};
 use crate::engine::Particle;
 use crate::model::run_output::RunOutput;
 use crate::observe::Context;
@@ -41,6 +44,9 @@ pub struct Measured {
     pub block_stderr: f64,
     pub block_time: f64,
     pub block_doubling: f64,
+    /// The run's own standard error of `z`: `block_stderr`, or for equal
+    /// rods between walls the wall-hit model's (NaN without either).
+    pub run_stderr: f64,
     /// Mean of the second half of the kept series minus the first, over
     /// the error of that difference (about N(0, 1) when equilibrated).
     pub drift: f64,
@@ -112,14 +118,22 @@ pub fn measure<const D: usize>(
         block_stderr: f64::NAN,
         block_time: f64::NAN,
         block_doubling: f64::NAN,
+        run_stderr: f64::NAN,
         drift: f64::NAN,
     };
+    // Equal rods between walls: the mass of each, else None.
+    let rod_mass = (D == 1 && ctx.wall_area > 0.0 && !movable.is_empty())
+        .then(|| movable[0].inv_mass)
+        .filter(|&im| movable.iter().all(|p| p.inv_mass == im))
+        .map(|im| 1.0 / im);
+    let mut measured_time = ctx.duration;
     let main = wall.as_ref().or(virial.as_ref());
     if let Some((z, dt)) = main {
         let cut = equilibration::cut(z);
         let kept = &z[cut..];
         m.z = mean(kept);
         m.cut_time = cut as f64 * dt;
+        measured_time = kept.len() as f64 * dt;
         if let Some(b) = blocks::blocked(kept) {
             m.block_stderr = b.stderr;
             m.block_time = b.length as f64 * dt;
@@ -138,6 +152,12 @@ pub fn measure<const D: usize>(
             "the pressure analysis needs `wall_pressure` (walls) or `virial_pressure` in [observe] scalars or series",
         )?;
     }
+    m.run_stderr = match rod_mass {
+        Some(mass) if wall.is_some() || z_wall_scalar.is_some() => {
+            rods::stderr(ctx.volume, measured_time, kinetic, mass)
+        }
+        _ => m.block_stderr,
+    };
     Ok(m)
 }
 

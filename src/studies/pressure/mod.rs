@@ -13,6 +13,7 @@ mod measure;
 mod packing;
 mod phases;
 mod points;
+mod rods;
 mod section;
 
 use super::{Finished, Start, Study};
@@ -37,6 +38,7 @@ pub const RESULTS: &[&str] = &[
     "Z_block_stderr",
     "block_time",
     "block_doubling",
+    "Z_run_stderr",
     "Z_drift",
 ];
 
@@ -48,7 +50,7 @@ impl Study for Pressure {
         "pressure"
     }
     fn about(&self) -> &'static str {
-        "compressibility factor Z = βP/ρ from the wall or virial pressure against packing fraction, with equilibration cuts, block-average errors and the 1/N extrapolation, beside Tonks (rods), the virial series and Henderson (disks), Carnahan-Starling-Kolafa, the virial series and Carnahan-Starling (spheres)"
+        "compressibility factor Z = βP/ρ from the wall or virial pressure against packing fraction, with equilibration cuts, block-average errors and the 1/N extrapolation, beside Tonks (rods), the virial series and Henderson (disks), Hansen-Goos, Carnahan-Starling-Kolafa, the virial series and Carnahan-Starling (spheres)"
     }
     fn results(&self) -> &'static [&'static str] {
         RESULTS
@@ -73,6 +75,7 @@ impl Study for Pressure {
             m.block_stderr,
             m.block_time,
             m.block_doubling,
+            m.run_stderr,
             m.drift,
         ];
         for (name, v) in RESULTS.iter().zip(values) {

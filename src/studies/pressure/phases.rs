@@ -10,9 +10,14 @@
 //!   melting at 0.545, crystal above (Hoover and Ree 1968); a fluid above
 //!   0.494 is metastable and may crystallise during a run.
 
+/// Packing fractions within this of a boundary count as on it (box lengths
+/// are written to 10 digits, so a point meant at 0.72 is 0.72 + 1e-10).
+const SAME: f64 = 1e-7;
+
 /// The phase a point of dimension `d` at packing fraction `eta` is in at
 /// equilibrium, as a short label.
 pub fn label(d: usize, eta: f64) -> &'static str {
+    let eta = eta - SAME;
     match d {
         1 => "fluid",
         2 if eta <= 0.700 => "fluid",
@@ -39,6 +44,8 @@ mod tests {
         assert_eq!(super::label(2, 0.71), "fluid-hexatic coexistence");
         assert_eq!(super::label(2, 0.74), "solid");
         assert!(super::is_fluid(3, 0.494));
+        assert!(super::is_fluid(2, 0.700_000_000_1));
+        assert_eq!(super::label(2, 0.720_000_000_1), "hexatic");
         assert!(!super::is_fluid(3, 0.5));
     }
 }

@@ -7,9 +7,18 @@ use crate::model::scene::{Boundary, Placement};
 use crate::stats::summary::Stats;
 use std::collections::BTreeMap;
 
-/// Fewest replicas whose spread is used as the error bar; with fewer the
-/// block-average error is used.
-pub const MIN_REPLICAS: u64 = 4;
+/// Replicas from which their spread alone is the error bar. With fewer the
+/// error bar is the larger of that spread and the runs' own error (block
+/// averages; for rods the exact wall-hit model): the standard error from
+/// n replicas is itself uncertain by 1/sqrt(2(n - 1)), 41 % for 4, and a
+/// mean over few replicas is t-distributed with n - 1 degrees of freedom,
+/// so 4 replicas that happen to agree closely give z-scores of 5 or more
+/// about 1 % of the time. The runs' own error rests on hundreds of blocks
+/// per run (or is exact), so where it is larger the replicas agreed by luck.
+/// From 16 replicas (a standard error good to 18 %) the spread is used as
+/// it is: it also covers what a single run's blocks cannot see (slow modes,
+/// different starts).
+pub const TRUSTED_REPLICAS: u64 = 16;
 
 /// One sweep point.
 pub struct Point {
@@ -29,6 +38,10 @@ pub struct Point {
     pub block_stderr: f64,
     pub block_time: f64,
     pub block_doubling: f64,
+    /// The runs' own standard error of the point's mean Z, combined like
+    /// `block_stderr`, and what it comes from ("blocks" or "wall hits").
+    pub run_stderr: f64,
+    pub run_basis: &'static str,
     /// Time discarded before recording (the descriptor's `equilibrate`),
     /// the mean time the MSER rule cut after it, and the largest |drift|.
     pub equilibrate: f64,
@@ -49,11 +62,15 @@ pub struct Point {
 
 impl Point {
     /// The point's error bar on Z and where it comes from.
+    /// (See `TRUSTED_REPLICAS`.)
     pub fn error(&self) -> (f64, &'static str) {
-        if self.z.n >= MIN_REPLICAS || !self.block_stderr.is_finite() {
-            (self.z.stderr, "replicas")
+        let replicas = self.z.stderr;
+        let own = self.run_stderr;
+        let trusted = self.z.n >= TRUSTED_REPLICAS && replicas.is_finite();
+        if trusted || !own.is_finite() || own <= replicas {
+            (replicas, "replicas")
         } else {
-            (self.block_stderr, "blocks")
+            (own, self.run_basis)
         }
     }
 
@@ -87,7 +104,13 @@ fn point(rs: &[&(RunSpec, RunOutput)]) -> Option<Point> {
         (v.len() == rs.len()).then(|| Stats::of(&v))
     };
     let particles: usize = scene.species.iter().map(|s| s.count).sum();
-    let blocks = of("Z_block_stderr");
+    let combined = |v: Vec<f64>| {
+        if v.len() == rs.len() {
+            v.iter().map(|s| s * s).sum::<f64>().sqrt() / rs.len() as f64
+        } else {
+            f64::NAN
+        }
+    };
     let runs = rs.len() as f64;
     let duration = d.run.duration.unwrap_or(f64::NAN);
     let collisions: f64 = rs.iter().map(|(_, o)| o.collisions as f64).sum();
@@ -115,10 +138,12 @@ fn point(rs: &[&(RunSpec, RunOutput)]) -> Option<Point> {
             _ => "random",
         },
         z: Stats::of(&of("Z")),
-        block_stderr: if blocks.len() == rs.len() {
-            blocks.iter().map(|s| s * s).sum::<f64>().sqrt() / runs
+        block_stderr: combined(of("Z_block_stderr")),
+        run_stderr: combined(of("Z_run_stderr")),
+        run_basis: if scene.dimension().ok()? == 1 && walls {
+            "wall hits"
         } else {
-            f64::NAN
+            "blocks"
         },
         block_time: mean(&of("block_time")),
         block_doubling: {
@@ -164,6 +189,8 @@ pub(super) mod tests {
                 ci_high: f64::NAN,
             },
             block_stderr: err,
+            run_stderr: err,
+            run_basis: "blocks",
             block_time: 1.0,
             block_doubling: 1.0,
             equilibrate: 0.0,
@@ -177,5 +204,25 @@ pub(super) mod tests {
             cpu_seconds: 0.0,
             example: None,
         }
+    }
+
+    #[test]
+    fn few_replicas_that_agree_by_luck_do_not_set_the_error() {
+        // 4 replicas scattering 5x less than their runs' own error: the
+        // runs' error is used; more scatter than it: the replicas'.
+        let mut p = point(2, 256, 0.3, 2.06, 0.0005);
+        p.z.n = 4;
+        p.run_stderr = 0.0025;
+        assert_eq!(p.error(), (0.0025, "blocks"));
+        p.run_stderr = 0.0001;
+        assert_eq!(p.error(), (0.0005, "replicas"));
+        // From 16 replicas their spread is the error bar whatever the runs say.
+        p.z.n = 16;
+        p.run_stderr = 0.0025;
+        assert_eq!(p.error(), (0.0005, "replicas"));
+        // Without a run error (a scalar-only run), the replicas'.
+        p.z.n = 4;
+        p.run_stderr = f64::NAN;
+        assert_eq!(p.error(), (0.0005, "replicas"));
     }
 }

@@ -8,7 +8,7 @@ use super::charts::{self, NAMES};
 use super::equations::{self, Equation};
 use super::finite_size::{self, Fit};
 use super::phases;
-use super::points::{self, MIN_REPLICAS, Point};
+use super::points::{self, Point};
 use crate::model::report::{Figure, ReportSection};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
@@ -43,7 +43,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
             &mut md,
             "pressure_deviation.svg",
             charts::deviation_chart(&all),
-            "Z over each dimension's reference equation (Tonks, the disks' virial series with its tail, Carnahan-Starling-Kolafa), minus 1, at the points where it holds; dashed: the other equations against the same reference. The points are at finite N: see the 1/N extrapolation",
+            "Z over each dimension's reference equation (Tonks, the disks' virial series with its tail, Hansen-Goos), minus 1, at the points where it holds; dashed: the other equations against the same reference. The points are at finite N: see the 1/N extrapolation",
         );
         let examples = time_examples(&all);
         if !examples.is_empty() {
@@ -69,10 +69,11 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
             &mut md,
             "pressure_dense_disks.svg",
             charts::dense_disks_chart(&dense),
-            "The pressure βPσ² = Zρ of the disks near the liquid-hexatic transition (mean ± error bar); dashed: the fluid's virial series, continued beyond its range",
+            "The pressure βPσ² = Zρ of the disks near the liquid-hexatic transition (mean ± error bar; dashed: joining the means). Where it falls as η grows is the finite box's loop (see the table below)",
         );
     }
     md.push_str(&headline(&all));
+    md.push_str(FINITE_N);
     for d in 1..=3 {
         let pts: Vec<&Point> = all
             .iter()
@@ -167,7 +168,7 @@ fn headline(all: &[Point]) -> String {
 fn table(d: usize, pts: &[&Point]) -> String {
     let eqs = equations::of(d);
     let mut md = format!(
-        "\n### {}\n\n| η | N | start | phase | Z | error from | rel. error | block error (block; ×2 ratio) | discarded | MSER cut | max \\|drift\\| |",
+        "\n### {}\n\n| η | N | start | phase | Z | error from | rel. error | runs' own error (block; ×2 ratio) | discarded | MSER cut | max \\|drift\\| |",
         NAMES[d - 1]
     );
     for e in eqs {
@@ -210,8 +211,16 @@ fn table(d: usize, pts: &[&Point]) -> String {
     md
 }
 
-/// "±s (t; r)": the block-average error, block length and doubling ratio.
+/// "±s (t; r)": the block-average error, block length and doubling ratio;
+/// for rods the wall-hit model's error instead.
 fn block(p: &Point) -> String {
+    if p.run_basis == "wall hits" && p.run_stderr.is_finite() {
+        return format!(
+            "±{} (wall hits; blocks ±{}, not valid here)",
+            num(p.run_stderr),
+            num(p.block_stderr)
+        );
+    }
     if !p.block_stderr.is_finite() {
         return "–".into();
     }
@@ -260,8 +269,13 @@ fn note(eqs: &[Equation], p: &Point) -> String {
             num(p.drift)
         ));
     }
-    if p.z.n < MIN_REPLICAS {
-        notes.push("few replicas: block error used".into());
+    let (_, from) = p.error();
+    if from != "replicas" {
+        notes.push(format!(
+            "the {} replicas scatter less than their runs' own error ({}): that error used",
+            p.z.n,
+            num(p.z.stderr)
+        ));
     }
     notes.join("; ")
 }
@@ -308,7 +322,10 @@ fn finite_size_table(fits: &[Fit]) -> String {
     let mut md = String::from(
         "\n### Finite size: Z against 1/N\n\n\
          Each row fits Z(N) = Z∞ + b/N to the points of one packing fraction, weighted by their error bars, \
-         and compares Z∞ with the reference equation (and the others).\n\n\
+         and compares Z∞ with the reference equation (and the others). At low density b → −B₂ρ (−2η for disks, \
+         −4η for spheres): each particle of a periodic box sees N − 1 others, so the pair term of Z is (N − 1)/N \
+         of the infinite system's. The line is the leading term: where the smallest box already shows the next \
+         one (the line's χ² beyond its 99 % point) it is left out and the line refitted, as the χ² column says.\n\n\
          | dimension | η | points (N: Z) | Z∞ | b | χ² (dof) | equations (z of Z∞) |\n|---|---|---|---|---|---|---|\n",
     );
     for f in fits {
@@ -329,11 +346,18 @@ fn finite_size_table(fits: &[Fit]) -> String {
                 )
             })
             .collect();
-        let chi2 = if f.dof > 0 {
+        let mut chi2 = if f.dof > 0 {
             format!("{} ({})", num(f.chi2), f.dof)
         } else {
             "– (0)".into()
         };
+        for (n, c, dof) in &f.left_out {
+            let _ = write!(
+                chi2,
+                "; N = {n} left out (the line through it: χ² {} for {dof}, beyond its 99 % point)",
+                num(*c)
+            );
+        }
         let _ = writeln!(
             md,
             "| {} | {} | {} | {} | {} | {chi2} | {} |",
@@ -349,7 +373,9 @@ fn finite_size_table(fits: &[Fit]) -> String {
 }
 
 /// Whether the dense disks' pressure falls anywhere as the density grows
-/// (the finite-size loop of the liquid-hexatic coexistence), and by how much.
+/// (the finite-size loop of the liquid-hexatic coexistence), and by how
+/// much: the loop's height is the largest fall of βPσ² from a point to a
+/// denser one, with the two points' errors combined.
 fn loop_text(pts: &[&Point]) -> String {
     let rho = |eta: f64| 4.0 * eta / std::f64::consts::PI;
     let p = |q: &Point| (q.z.mean * rho(q.eta), q.error().0 * rho(q.eta));
@@ -370,19 +396,43 @@ fn loop_text(pts: &[&Point]) -> String {
          With {n} disks in a periodic box the fluid and the hexatic phase cannot coexist as in a large system: \
          the interface between them costs free energy that a small box cannot dilute, and the pressure \
          against density has a loop (a stretch where it falls as the density grows) in the coexistence range \
-         0.700-0.716 (Bernard and Krauth 2011). "
+         0.700-0.716 (Bernard and Krauth 2011); it shrinks as N grows and vanishes for an infinite system \
+         (Engel et al. 2013). Each point below started from a compression to its density, discarded the \
+         time in `discarded`, and was then tested for drift (second half of each run against the first, in \
+         block errors) after the MSER cut.\n\n\
+         | η | phase | βPσ² | error from | discarded | MSER cut | max \\|drift\\| | CPU s |\n|---|---|---|---|---|---|---|---|\n"
     );
+    for q in pts {
+        let (v, e) = p(q);
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} ({}) | {} | {} | {} | {} |",
+            num(q.eta),
+            phases::label(2, q.eta),
+            pm(v, e),
+            q.error().1,
+            q.z.n,
+            num(q.equilibrate),
+            num(q.cut),
+            num(q.drift),
+            num(q.cpu_seconds)
+        );
+    }
+    md.push('\n');
     match best {
         Some((i, j, drop, err)) => {
             let _ = write!(
                 md,
-                "Here βPσ² falls from {} at η = {} to {} at η = {}: by {} ({} error bars).",
+                "**Loop height.** βPσ² falls from {} at η = {} to {} at η = {}: the loop is {} high, {} standard \
+                 errors above the noise (the largest fall between any two of the {} points, so a pure-noise curve \
+                 would show a fall of a standard error or two).",
                 pm(p(pts[i]).0, p(pts[i]).1),
                 num(pts[i].eta),
                 pm(p(pts[j]).0, p(pts[j]).1),
                 num(pts[j].eta),
                 pm(drop, err),
-                num(drop / err)
+                num(drop / err),
+                pts.len()
             );
         }
         None => md.push_str("Here βPσ² rises at every step: no loop is resolved."),
@@ -396,6 +446,12 @@ fn loop_text(pts: &[&Point]) -> String {
     );
     md
 }
+
+const FINITE_N: &str = "\nThe disks' and spheres' points are periodic boxes of fixed N, and the \
+equations describe N → ∞: a point at finite N sits below its equation by about −b/N, with b → −B₂ρ at low density \
+(−2η for disks, −4η for spheres; each particle sees N − 1 others) and b ≈ −0.76 (disks) and −1.1 (spheres) at \
+η = 0.3. At N = 256 that is several times the error bar of a precise point, so the z-scores in these tables \
+measure the finite size as much as the equations; the 1/N extrapolation below is the test of the equations.\n";
 
 const INTRO: &str = "\nThe Imperial project asks: \"Can you modify the boundary code so that you can record the pressure \
 being exerted on the box during each time step and hence produce a plot of pressure vs. time? Does your simulation \
@@ -423,7 +479,7 @@ same N and V. With kT = 2K/(d(N − 1)) the mean squared relative velocity of a 
 is left is the canonical finite-size effect of a periodic box whose N is fixed, of order 1/N (the full study \
 measured −0.76/N for disks and −1.1/N for spheres at η = 0.3): the study measures Z at several N and \
 extrapolates. This, not the equations or the statistics, is why the spheres at η = 0.3 and N = 256 sit about \
-0.14 % below Carnahan-Starling-Kolafa. \
+0.1 % below Hansen-Goos. \
 **Starts and equilibration.** Rods start from the exact equilibrium distribution (uniform gaps) and nothing is \
 discarded. Dilute disks and spheres start from random insertion; dense ones (disks from η = 0.5, spheres from \
 0.3) from Lubachevsky-Stillinger compression, never random insertion. Each run then discards the time in \
@@ -433,19 +489,28 @@ that minimises the variance of the remaining mean (`MSER cut`, mean time over th
 noise). Equilibrium is then judged by the drift: the mean of the second half of the kept series minus the first, \
 in units of its block error bar; it is about N(0, 1) when the run is stationary, and a point whose largest \
 |drift| over its replicas exceeds 4 is flagged. \
-**Error bars.** Z of a run is the mean over its kept intervals. The point's error bar is the standard error over \
-its independent replicas (each its own start and velocities: `error from` says `replicas (n)`); with fewer than \
-4 replicas it is the block-average error instead. The block error is shown beside it for every point: the \
-kept series is cut into blocks of 1, 2, 4, ... intervals and the first block length whose doubling no longer \
-raises the estimate beyond its own statistical error is used (Flyvbjerg and Petersen 1989); the column gives \
-the block length in time and the ratio of the estimate at twice that length (about 1 on a plateau; `no \
-plateau`: the series was too short to show one, and the block error is then a lower bound). \
+**Error bars.** Z of a run is the mean over its kept intervals. Each run also has its own error: the \
+block-average error of its series (Flyvbjerg and Petersen 1989: the kept series is cut into blocks of 1, 2, 4, \
+... intervals and the first block length whose doubling no longer raises the estimate beyond its own \
+statistical error is used; the column gives the block length in time and the ratio of the estimate at twice \
+that length, about 1 on a plateau, `no plateau` when the series was too short to show one and the block \
+error is a lower bound). For rods the block error does not apply: equal rods swap velocities, so each speed \
+hits the walls periodically and the mean converges as 1/T, not 1/√T; their own error is the exact wall-hit \
+phase noise, σ_Z = (L/T)√(m/12K) per run. The point's error bar is the standard error over its independent \
+replicas (each its own start and velocities) when there are at least 16; with fewer it is the larger of that \
+and the runs' own error combined, because a standard error from n replicas is itself uncertain by \
+1/√(2(n − 1)) (41 % for 4), and 4 replicas that happen to agree closely give z-scores of 5 or more about 1 % of \
+the time. `error from` says which was used, and with how many replicas. \
 **Theory**: rods, Tonks 1936 (exact). Disks, the virial series with the coefficients up to B10 of Clisby and \
 McCoy 2006 (J. Stat. Phys. 122, 15; B3 and B4 exact) plus the terms left out continued geometrically (5e-5 of Z \
-at η = 0.3, 7e-4 at 0.4), and Henderson 1975, Z = (1 + η²/8)/(1 − η)², 2.5e-4 above the series at 0.3. Spheres, \
-Carnahan-Starling-Kolafa (Boublík and Nezbeda 1986), Z = (1 + η + η² − ⅔(η³ + η⁴))/(1 − η)³, within 6e-5 of the \
-spheres' virial series to B10 with its tail at 0.3; that series itself; and Carnahan-Starling, \
-(1 + η + η² − η³)/(1 − η)³, which is 0.27 % low at 0.3. The `note` column flags points beyond where an equation \
+at η = 0.3, 7e-4 at 0.4), and Henderson 1975, Z = (1 + η²/8)/(1 − η)², 2.5e-4 above the series at 0.3; no \
+accurate published fit for the dense disk fluid (Kolafa and Rottner 2006) could be checked here, so points \
+from 0.5 on have no reference equation. Spheres, Hansen-Goos 2016 (J. Chem. Phys. 144, 164506), \
+Z = 8 ln(1 − η)/η + p(η)/(1 − η)³ with a degree-7 polynomial p built on the virial coefficients and fitted to \
+the fluid's simulations: its expansion gives B2-B4 exactly and B5-B10 within 0.4 %; Carnahan-Starling-Kolafa \
+(Boublík and Nezbeda 1986), Z = (1 + η + η² − ⅔(η³ + η⁴))/(1 − η)³, within 1e-4 of it up to 0.4; the spheres' \
+virial series to B10 with its tail; and Carnahan-Starling, (1 + η + η² − η³)/(1 − η)³, which is 0.25 % low at \
+0.3. The `note` column flags points beyond where an equation \
 is expected to be within ~1e-3 of the fluid's Z, and points where the fluid is not the stable phase: disks \
 above 0.700 (fluid-hexatic coexistence to 0.716, hexatic to 0.720, solid above; Bernard and Krauth 2011), \
 spheres above freezing at 0.494 (coexistence to 0.545, crystal above).\n";
