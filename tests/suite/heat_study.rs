@@ -168,7 +168,8 @@ fn points_relax_as_the_collisionless_theory_says() {
 /// and 0.043 ± 0.004 (cold), so 8 such runs expected z ~ 3 against the
 /// 4-sigma test and passed by luck. Runs of 5000 scatter less (sd 0.015
 /// hot, 0.012 cold); 16 of them give 0.032 ± 0.004 and 0.035 ± 0.003,
-/// z ~ 8 and 12 (17 s on one core).
+/// z ~ 8 and 12 (seed 18: 0.035 ± 0.004 and 0.031 ± 0.003, z ~ 9 and 10;
+/// 18 s on one core).
 #[test]
 fn steady_conduction_balances_the_walls() {
     let runs = ensemble(&descriptor(
