@@ -2,8 +2,9 @@
 //! gathered first, then every contact time is computed at once without a
 //! branch: whether a pair approaches is a coin toss that no branch predictor
 //! guesses, and branch-free arithmetic over arrays vectorises. The times are
-//! those of `collide::contact_time_before`, bit for bit, and a prediction
-//! picks its partner from them by that function's rules (see `Batch::earliest`).
+//! those of `collide::contact_time_before`, bit for bit; `Batch::earliest`
+//! picks the partner by that function's rules, and passes over a partner
+//! whose own event comes first.
 
 use super::vector::Vector;
 
