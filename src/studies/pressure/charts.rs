@@ -70,7 +70,9 @@ pub fn z_chart(all: &[Point]) -> ChartSpec {
     }
 }
 
-pub fn deviation_chart(all: &[Point]) -> ChartSpec {
+/// None when no point has a reference equation that holds (the disks'
+/// loop study, say): an empty chart says nothing.
+pub fn deviation_chart(all: &[Point]) -> Option<ChartSpec> {
     let mut layers = Vec::new();
     for d in 1..=3 {
         // Fluid points where the reference equation holds.
@@ -101,13 +103,16 @@ pub fn deviation_chart(all: &[Point]) -> ChartSpec {
             (p.z.mean / r - 1.0, p.error().0 / r)
         });
     }
-    ChartSpec {
+    if layers.is_empty() {
+        return None;
+    }
+    Some(ChartSpec {
         title: "Z over the reference equation, minus 1 (fluid points, finite N)".into(),
         x_label: "packing fraction η".into(),
         y_label: "Z / Z_reference − 1".into(),
         layers,
         ..Default::default()
-    }
+    })
 }
 
 /// The pressure of a few runs against time, each over its own mean.

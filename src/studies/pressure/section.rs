@@ -39,12 +39,14 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
             charts::z_chart(&all),
             "Compressibility factor Z = βP/ρ against packing fraction η (rods between walls, disks and spheres in periodic boxes; mean ± error bar per point, see the tables); lines: each dimension's equations of state, the first solid, the others dashed; black dashed: the ideal gas, Z = 1",
         );
-        figure(
-            &mut md,
-            "pressure_deviation.svg",
-            charts::deviation_chart(&all),
-            "Z over each dimension's reference equation (Tonks, the disks' virial series with its tail, Hansen-Goos), minus 1, at the points where it holds; dashed: the other equations against the same reference. The points are at finite N: see the 1/N extrapolation",
-        );
+        if let Some(chart) = charts::deviation_chart(&all) {
+            figure(
+                &mut md,
+                "pressure_deviation.svg",
+                chart,
+                "Z over each dimension's reference equation (Tonks, the disks' virial series with its tail, Hansen-Goos), minus 1, at the points where it holds; dashed: the other equations against the same reference. The points are at finite N: see the 1/N extrapolation",
+            );
+        }
         let examples = time_examples(&all);
         if !examples.is_empty() {
             figure(
