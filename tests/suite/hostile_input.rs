@@ -4,13 +4,12 @@
 //! numbers a reader can read. Devices, thread counts and scene checks are
 //! in `study_cli.rs`; the fuzz test over mutated studies is `hostile_fuzz.rs`.
 
-use crate::study_common::{PISTON, write_descriptor};
+use crate::study_common::{PISTON, run_options, write_descriptor};
 use bonkers::descriptor::errors::DescriptorError;
 use bonkers::descriptor::load::parse;
 use bonkers::model::scene::Placement;
-use bonkers::runner::pipeline::{self, StudyOptions};
+use bonkers::runner::pipeline;
 use bonkers::runner::plan::plan;
-use bonkers::runner::progress::ProgressMode;
 use std::process::Command;
 use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
@@ -338,18 +337,7 @@ fn names_at_the_limit_are_written() {
     validate(&text).unwrap();
     let file = write_descriptor(dir.path(), &text);
     let out = dir.path().join("out");
-    let options = StudyOptions {
-        out: Some(out.clone()),
-        threads: Some(1),
-        replicas: None,
-        quick: false,
-        fresh: false,
-        progress: ProgressMode::Quiet,
-        yes: false,
-        command_line: vec!["study".into(), "run".into()],
-        checkpoint_every: None,
-        force: false,
-    };
+    let options = run_options(&out, 1);
     let stop = AtomicBool::new(false);
     let outcome = pipeline::run_study(&file, &options, &bonkers::runner::simulate::run, &stop)
         .unwrap_or_else(|e| panic!("{e}"));

@@ -4,13 +4,12 @@
 //! record is trusted only if its checksum holds; a record that is a link to
 //! /dev/zero, a pipe or a folder neither hangs a run nor fails it with exit 1.
 
-use crate::study_common::{PISTON, assert_same, fake, tables, write_descriptor};
+use crate::study_common::{PISTON, assert_same, fake, run_options, tables, write_descriptor};
 use bonkers::model::run_output::RunOutput;
 use bonkers::model::run_spec::RunSpec;
 use bonkers::runner::checkpoint::{self, Place};
 use bonkers::runner::lock::OutLock;
 use bonkers::runner::pipeline::{Slice, StudyOptions, run_slice, run_study};
-use bonkers::runner::progress::ProgressMode;
 use bonkers::runner::shard::Shard;
 use bonkers::runner::store::read_parquet;
 use polars::prelude::DataFrame;
@@ -22,21 +21,6 @@ use std::time::{Duration, Instant};
 
 /// Longer than any of these commands takes; a hang fails the test.
 const LIMIT: Duration = Duration::from_secs(60);
-
-fn options(out: &Path) -> StudyOptions {
-    StudyOptions {
-        out: Some(out.to_path_buf()),
-        threads: Some(2),
-        replicas: None,
-        quick: false,
-        fresh: false,
-        progress: ProgressMode::Quiet,
-        yes: false,
-        command_line: vec!["study".into(), "run".into()],
-        checkpoint_every: None,
-        force: false,
-    }
-}
 
 /// The `study` binary with `args`: exit code and stderr, or a failed test
 /// if it runs longer than `LIMIT` (it is killed then).
@@ -224,7 +208,13 @@ fn a_lock_file_that_is_a_link_is_not_written_through() {
     );
     assert!(OutLock::acquire(&piped).is_err());
     let file = write_descriptor(dir.path(), PISTON);
-    let err = run_study(&file, &options(&piped), &fake, &AtomicBool::new(false)).unwrap_err();
+    let err = run_study(
+        &file,
+        &run_options(&piped, 2),
+        &fake,
+        &AtomicBool::new(false),
+    )
+    .unwrap_err();
     assert_eq!(err.exit_code(), 2, "{err}");
     assert!(err.to_string().contains("is not a regular file"), "{err}");
 }
@@ -391,7 +381,13 @@ fn only_names_bonkers_makes_are_removed() {
         (
             "resume",
             |f, o, c| {
-                run_study(f, &options(o), &|s| c.simulate(s), &AtomicBool::new(false)).unwrap();
+                run_study(
+                    f,
+                    &run_options(o, 2),
+                    &|s| c.simulate(s),
+                    &AtomicBool::new(false),
+                )
+                .unwrap();
                 c.take()
             },
             0,
@@ -401,7 +397,7 @@ fn only_names_bonkers_makes_are_removed() {
             |f, o, c| {
                 let fresh = StudyOptions {
                     fresh: true,
-                    ..options(o)
+                    ..run_options(o, 2)
                 };
                 run_study(f, &fresh, &|s| c.simulate(s), &AtomicBool::new(false)).unwrap();
                 c.take()
@@ -414,7 +410,7 @@ fn only_names_bonkers_makes_are_removed() {
                 let shard = Slice::Shard(Shard { index: 1, count: 2 });
                 run_slice(
                     f,
-                    &options(o),
+                    &run_options(o, 2),
                     &shard,
                     &|s| c.simulate(s),
                     &AtomicBool::new(false),
@@ -444,7 +440,7 @@ fn only_names_bonkers_makes_are_removed() {
         let dir = tempfile::tempdir().unwrap();
         let file = write_descriptor(dir.path(), PISTON);
         let out = dir.path().join("out");
-        run_study(&file, &options(&out), &fake, &AtomicBool::new(false)).unwrap();
+        run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
         let made = tables(&out);
         plant(&out, &USERS);
         plant(&out, &LEFTOVERS);
@@ -490,7 +486,7 @@ fn a_folder_no_study_made_is_refused_unless_forced() {
         std::fs::create_dir(&out).unwrap();
         plant(&out, holds);
         let before = snapshot(&out);
-        let result = run_study(&file, &options(&out), &fake, &AtomicBool::new(false));
+        let result = run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false));
         assert_eq!(result.is_ok(), accepted, "{holds:?}: {result:?}");
         if accepted {
             assert!(out.join("summary.parquet").is_file());
@@ -524,7 +520,7 @@ fn a_folder_no_study_made_is_refused_unless_forced() {
     std::fs::write(&not_a_folder, "x").unwrap();
     let err = run_study(
         &file,
-        &options(&not_a_folder),
+        &run_options(&not_a_folder, 2),
         &fake,
         &AtomicBool::new(false),
     )
@@ -556,7 +552,13 @@ fn a_record_changed_after_it_was_written_is_made_again() {
     let out = dir.path().join("out");
     let counting = Counting(AtomicUsize::new(0));
     let stop = AtomicBool::new(false);
-    run_study(&file, &options(&out), &|s| counting.simulate(s), &stop).unwrap();
+    run_study(
+        &file,
+        &run_options(&out, 2),
+        &|s| counting.simulate(s),
+        &stop,
+    )
+    .unwrap();
     assert_eq!(counting.take(), 18);
     let made = tables(&out);
     let names = records(&out);
@@ -569,7 +571,13 @@ fn a_record_changed_after_it_was_written_is_made_again() {
     let without = format!("{{{}", &text[text.find(",\"run_id\"").unwrap() + 1..]);
     serde_json::from_str::<serde_json::Value>(&without).unwrap();
     std::fs::write(path(1), &without).unwrap();
-    run_study(&file, &options(&out), &|s| counting.simulate(s), &stop).unwrap();
+    run_study(
+        &file,
+        &run_options(&out, 2),
+        &|s| counting.simulate(s),
+        &stop,
+    )
+    .unwrap();
     assert_eq!(counting.take(), 2);
     assert_same(&made, &tables(&out));
     let remade = std::fs::read_to_string(path(0)).unwrap();
@@ -602,7 +610,7 @@ fn collect_with_more_folders_checks_their_records() {
     let stop = AtomicBool::new(false);
     for (out, index) in [(&a, 1), (&b, 2)] {
         let shard = Slice::Shard(Shard { index, count: 2 });
-        run_slice(&file, &options(out), &shard, &fake, &stop).unwrap();
+        run_slice(&file, &run_options(out, 2), &shard, &fake, &stop).unwrap();
     }
     let theirs = records(&b);
     let path = |i: usize| b.join("runs").join(&theirs[i]);
@@ -624,9 +632,9 @@ fn collect_with_more_folders_checks_their_records() {
     );
 
     let counting = Counting(AtomicUsize::new(0));
-    run_study(&file, &options(&a), &|s| counting.simulate(s), &stop).unwrap();
+    run_study(&file, &run_options(&a, 2), &|s| counting.simulate(s), &stop).unwrap();
     assert_eq!(counting.take(), 2);
     let whole = dir.path().join("whole");
-    run_study(&file, &options(&whole), &fake, &stop).unwrap();
+    run_study(&file, &run_options(&whole, 2), &fake, &stop).unwrap();
     assert_same(&tables(&whole), &tables(&a));
 }

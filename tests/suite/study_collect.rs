@@ -3,34 +3,18 @@
 //! missing runs, lists failed ones, and a plan run in parts adds up to one
 //! whole run.
 
-use crate::study_common::{PISTON, assert_same, fake, tables, write_descriptor};
+use crate::study_common::{PISTON, assert_same, fake, run_options, tables, write_descriptor};
 use bonkers::descriptor::errors::StudyError;
 use bonkers::descriptor::load::parse;
 use bonkers::model::run_output::RunOutput;
 use bonkers::model::run_spec::RunSpec;
 use bonkers::runner::collect::{MissingRuns, Unfinished};
-use bonkers::runner::pipeline::{CollectOptions, StudyOptions, collect_study, run_part, run_study};
+use bonkers::runner::pipeline::{CollectOptions, collect_study, run_part, run_study};
 use bonkers::runner::plan::plan;
-use bonkers::runner::progress::ProgressMode;
 use bonkers::runner::run::{Subset, run_file};
 use std::path::Path;
 use std::process::Command;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-
-fn run_options(out: &Path) -> StudyOptions {
-    StudyOptions {
-        out: Some(out.to_path_buf()),
-        threads: Some(2),
-        replicas: None,
-        quick: false,
-        fresh: false,
-        progress: ProgressMode::Quiet,
-        yes: false,
-        command_line: vec!["study".into(), "run".into()],
-        checkpoint_every: None,
-        force: false,
-    }
-}
 
 fn collect_options(out: &Path) -> CollectOptions {
     CollectOptions {
@@ -76,7 +60,7 @@ fn collect_after_run_gives_the_same_tables() {
     let dir = tempfile::tempdir().unwrap();
     let file = write_descriptor(dir.path(), PISTON);
     let out = dir.path().join("out");
-    run_study(&file, &run_options(&out), &fake, &AtomicBool::new(false)).unwrap();
+    run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
     let made_by_run = tables(&out);
     for table in [
         "runs.parquet",
@@ -110,7 +94,7 @@ fn study_collect_on_the_command_line() {
     let dir = tempfile::tempdir().unwrap();
     let file = write_descriptor(dir.path(), PISTON);
     let out = dir.path().join("out");
-    run_study(&file, &run_options(&out), &fake, &AtomicBool::new(false)).unwrap();
+    run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
     let made_by_run = tables(&out);
     let (file_arg, out_arg) = (file.to_str().unwrap(), out.to_str().unwrap());
     let (code, err) = study(&["collect", file_arg, "--out", out_arg]);
@@ -121,7 +105,7 @@ fn study_collect_on_the_command_line() {
     let parts = dir.path().join("parts");
     run_part(
         &file,
-        &run_options(&parts),
+        &run_options(&parts, 2),
         Subset::All,
         &fake,
         &AtomicBool::new(false),
@@ -159,7 +143,7 @@ fn missing_runs_are_listed_and_nothing_is_written() {
     let file = write_descriptor(dir.path(), PISTON);
     let out = dir.path().join("out");
     let stop = AtomicBool::new(false);
-    run_part(&file, &run_options(&out), Subset::All, &fake, &stop).unwrap();
+    run_part(&file, &run_options(&out, 2), Subset::All, &fake, &stop).unwrap();
     let specs = specs();
     for id in [3, 11] {
         std::fs::remove_file(run_file(&out, specs[id].seed)).unwrap();
@@ -235,7 +219,7 @@ fn failed_runs_are_listed_and_kept_in_the_tables() {
     };
     let report = run_part(
         &file,
-        &run_options(&out),
+        &run_options(&out, 2),
         Subset::All,
         &flaky,
         &AtomicBool::new(false),
@@ -284,7 +268,7 @@ fn a_plan_run_in_two_parts_then_collected_equals_one_run() {
     let file = write_descriptor(dir.path(), PISTON);
     let stop = AtomicBool::new(false);
     let whole = dir.path().join("whole");
-    run_study(&file, &run_options(&whole), &fake, &stop).unwrap();
+    run_study(&file, &run_options(&whole, 2), &fake, &stop).unwrap();
 
     let out = dir.path().join("parts");
     let calls = AtomicUsize::new(0);
@@ -299,7 +283,7 @@ fn a_plan_run_in_two_parts_then_collected_equals_one_run() {
 
     let first = run_part(
         &file,
-        &run_options(&out),
+        &run_options(&out, 2),
         Subset::Matching(&even),
         &counting,
         &stop,
@@ -316,7 +300,7 @@ fn a_plan_run_in_two_parts_then_collected_equals_one_run() {
 
     let second = run_part(
         &file,
-        &run_options(&out),
+        &run_options(&out, 2),
         Subset::Matching(&odd),
         &counting,
         &stop,
@@ -330,14 +314,14 @@ fn a_plan_run_in_two_parts_then_collected_equals_one_run() {
     assert_same(&tables(&whole), &tables(&out));
 
     // --fresh on part of the plan redoes that part and keeps the rest.
-    let mut fresh = run_options(&out);
+    let mut fresh = run_options(&out, 2);
     fresh.fresh = true;
     let redone = run_part(&file, &fresh, Subset::Ids(&[0, 9]), &counting, &stop).unwrap();
     assert_eq!(
         (redone.ran, redone.resumed, calls.swap(0, Ordering::SeqCst)),
         (2, 0, 2)
     );
-    let again = run_part(&file, &run_options(&out), Subset::All, &counting, &stop).unwrap();
+    let again = run_part(&file, &run_options(&out, 2), Subset::All, &counting, &stop).unwrap();
     assert_eq!((again.ran, again.resumed), (0, 18));
     collect_study(&file, &collect_options(&out)).unwrap();
     assert_same(&tables(&whole), &tables(&out));
@@ -345,7 +329,7 @@ fn a_plan_run_in_two_parts_then_collected_equals_one_run() {
     // An id the plan does not have is an error, not an empty run.
     let err = run_part(
         &file,
-        &run_options(&out),
+        &run_options(&out, 2),
         Subset::Ids(&[18]),
         &counting,
         &stop,

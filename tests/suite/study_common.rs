@@ -5,7 +5,9 @@
 use bonkers::descriptor::load::parse;
 use bonkers::model::run_output::{Histogram, RunOutput, Series};
 use bonkers::model::run_spec::RunSpec;
+use bonkers::runner::pipeline::StudyOptions;
 use bonkers::runner::plan::plan;
+use bonkers::runner::progress::ProgressMode;
 use bonkers::runner::store::read_parquet;
 use polars::prelude::DataFrame;
 use std::path::{Path, PathBuf};
@@ -176,4 +178,20 @@ pub fn ensemble(text: &str) -> Vec<(RunSpec, RunOutput)> {
         all.append(&mut out);
         all
     })
+}
+
+/// `study run` options for the tests: quiet, into `out`, on `threads` threads.
+pub fn run_options(out: &Path, threads: usize) -> StudyOptions {
+    StudyOptions {
+        out: Some(out.to_path_buf()),
+        threads: Some(threads),
+        replicas: None,
+        quick: false,
+        fresh: false,
+        progress: ProgressMode::Quiet,
+        yes: false,
+        command_line: vec!["study".into(), "run".into()],
+        checkpoint_every: None,
+        force: false,
+    }
 }

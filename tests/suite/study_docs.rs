@@ -3,11 +3,11 @@
 //! of observables is the observable catalogue, and it lists every analysis
 //! option bonkers knows.
 
+use crate::study_common::run_options;
 use bonkers::descriptor::load::{parse, quick};
 use bonkers::descriptor::sweep::count;
 use bonkers::observe::{CATALOGUE, Entry, catalogue};
 use bonkers::runner::pipeline::{StudyOptions, run_study};
-use bonkers::runner::progress::ProgressMode;
 use bonkers::runner::store::read_parquet;
 use bonkers::studies::REGISTRY;
 use std::sync::atomic::AtomicBool;
@@ -52,16 +52,9 @@ fn the_documented_example_runs() {
     std::fs::write(&file, example()).unwrap();
     let out = dir.path().join("out");
     let options = StudyOptions {
-        out: Some(out.clone()),
-        threads: Some(2),
-        replicas: None,
         quick: true,
-        fresh: false,
-        progress: ProgressMode::Quiet,
-        yes: false,
         command_line: vec!["study".into()],
-        checkpoint_every: None,
-        force: false,
+        ..run_options(&out, 2)
     };
     let outcome = run_study(
         &file,

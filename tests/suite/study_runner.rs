@@ -1,12 +1,13 @@
 //! Running studies with a fake simulator: determinism across thread counts,
 //! resume after interruption, --fresh, failures, and the Parquet tables.
 
-use crate::study_common::{Interrupting, PISTON, assert_same, fake, tables, write_descriptor};
+use crate::study_common::{
+    Interrupting, PISTON, assert_same, fake, run_options, tables, write_descriptor,
+};
 use bonkers::descriptor::errors::StudyError;
 use bonkers::descriptor::load::parse;
-use bonkers::runner::pipeline::{StudyOptions, run_study};
+use bonkers::runner::pipeline::run_study;
 use bonkers::runner::plan::plan;
-use bonkers::runner::progress::ProgressMode;
 use bonkers::runner::run::run_file;
 use bonkers::runner::store::read_parquet;
 use std::path::Path;
@@ -36,21 +37,6 @@ fn run_files(out: &Path) -> usize {
     std::fs::read_dir(out.join("runs")).unwrap().count()
 }
 
-fn options(out: &Path, threads: usize) -> StudyOptions {
-    StudyOptions {
-        out: Some(out.to_path_buf()),
-        threads: Some(threads),
-        replicas: None,
-        quick: false,
-        fresh: false,
-        progress: ProgressMode::Quiet,
-        yes: false,
-        command_line: vec!["study".into(), "run".into()],
-        checkpoint_every: None,
-        force: false,
-    }
-}
-
 #[test]
 fn tables_are_identical_on_1_2_and_4_threads() {
     let dir = tempfile::tempdir().unwrap();
@@ -59,7 +45,7 @@ fn tables_are_identical_on_1_2_and_4_threads() {
     let mut all = Vec::new();
     for threads in [1, 2, 4] {
         let out = dir.path().join(format!("out{threads}"));
-        let outcome = run_study(&file, &options(&out, threads), &fake, &stop).unwrap();
+        let outcome = run_study(&file, &run_options(&out, threads), &fake, &stop).unwrap();
         assert_eq!(
             (
                 outcome.planned,
@@ -80,7 +66,7 @@ fn runs_table_has_the_promised_columns() {
     let dir = tempfile::tempdir().unwrap();
     let file = write_descriptor(dir.path(), PISTON);
     let out = dir.path().join("out");
-    run_study(&file, &options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
+    run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
     let runs = read_parquet(&out.join("runs.parquet")).unwrap();
     let names: Vec<String> = runs
         .get_column_names()
@@ -143,7 +129,7 @@ fn an_interrupted_study_resumes_with_only_the_missing_runs() {
     let reference = dir.path().join("reference");
     run_study(
         &file,
-        &options(&reference, 1),
+        &run_options(&reference, 1),
         &fake,
         &AtomicBool::new(false),
     )
@@ -152,7 +138,7 @@ fn an_interrupted_study_resumes_with_only_the_missing_runs() {
     let out = dir.path().join("out");
     let interrupting = Interrupting::new(5);
     let simulate = |s: &_| interrupting.simulate(s);
-    let err = run_study(&file, &options(&out, 2), &simulate, &interrupting.stop).unwrap_err();
+    let err = run_study(&file, &run_options(&out, 2), &simulate, &interrupting.stop).unwrap_err();
     assert!(matches!(err, StudyError::Interrupted(_)), "{err}");
     assert_eq!(err.exit_code(), 130);
     assert!(
@@ -167,7 +153,13 @@ fn an_interrupted_study_resumes_with_only_the_missing_runs() {
         calls.fetch_add(1, Ordering::SeqCst);
         fake(s)
     };
-    let outcome = run_study(&file, &options(&out, 4), &counting, &AtomicBool::new(false)).unwrap();
+    let outcome = run_study(
+        &file,
+        &run_options(&out, 4),
+        &counting,
+        &AtomicBool::new(false),
+    )
+    .unwrap();
     assert_eq!(calls.load(Ordering::SeqCst), 18 - saved);
     assert_eq!((outcome.ran, outcome.resumed), (18 - saved, saved));
     assert_same(&tables(&reference), &tables(&out));
@@ -178,7 +170,13 @@ fn an_interrupted_study_resumes_with_only_the_missing_runs() {
         std::fs::remove_file(run_file(&out, specs[id].seed)).unwrap();
     }
     calls.store(0, Ordering::SeqCst);
-    run_study(&file, &options(&out, 2), &counting, &AtomicBool::new(false)).unwrap();
+    run_study(
+        &file,
+        &run_options(&out, 2),
+        &counting,
+        &AtomicBool::new(false),
+    )
+    .unwrap();
     assert_eq!(calls.load(Ordering::SeqCst), 2);
     assert_same(&tables(&reference), &tables(&out));
 }
@@ -189,16 +187,16 @@ fn a_changed_descriptor_or_fresh_reruns_everything() {
     let file = write_descriptor(dir.path(), PISTON);
     let out = dir.path().join("out");
     let stop = AtomicBool::new(false);
-    run_study(&file, &options(&out, 2), &fake, &stop).unwrap();
+    run_study(&file, &run_options(&out, 2), &fake, &stop).unwrap();
     let calls = AtomicUsize::new(0);
     let counting = |s: &_| {
         calls.fetch_add(1, Ordering::SeqCst);
         fake(s)
     };
-    run_study(&file, &options(&out, 2), &counting, &stop).unwrap();
+    run_study(&file, &run_options(&out, 2), &counting, &stop).unwrap();
     assert_eq!(calls.load(Ordering::SeqCst), 0, "everything resumed");
 
-    let mut fresh = options(&out, 2);
+    let mut fresh = run_options(&out, 2);
     fresh.fresh = true;
     run_study(&file, &fresh, &counting, &stop).unwrap();
     assert_eq!(calls.load(Ordering::SeqCst), 18);
@@ -209,7 +207,7 @@ fn a_changed_descriptor_or_fresh_reruns_everything() {
         &PISTON.replace("duration = 100.0", "duration = 50.0"),
     );
     calls.store(0, Ordering::SeqCst);
-    run_study(&file, &options(&out, 2), &counting, &stop).unwrap();
+    run_study(&file, &run_options(&out, 2), &counting, &stop).unwrap();
     assert_eq!(calls.load(Ordering::SeqCst), 18);
 }
 
@@ -223,7 +221,13 @@ fn failing_and_panicking_runs_are_recorded_and_the_rest_go_on() {
         5 => panic!("engine bug"),
         _ => fake(s),
     };
-    let outcome = run_study(&file, &options(&out, 2), &flaky, &AtomicBool::new(false)).unwrap();
+    let outcome = run_study(
+        &file,
+        &run_options(&out, 2),
+        &flaky,
+        &AtomicBool::new(false),
+    )
+    .unwrap();
     assert_eq!((outcome.ran, outcome.failed), (18, 2));
     let runs = read_parquet(&out.join("runs.parquet")).unwrap();
     let status = runs.column("status").unwrap().str().unwrap();
@@ -237,7 +241,13 @@ fn failing_and_panicking_runs_are_recorded_and_the_rest_go_on() {
         calls.fetch_add(1, Ordering::SeqCst);
         fake(s)
     };
-    let outcome = run_study(&file, &options(&out, 2), &counting, &AtomicBool::new(false)).unwrap();
+    let outcome = run_study(
+        &file,
+        &run_options(&out, 2),
+        &counting,
+        &AtomicBool::new(false),
+    )
+    .unwrap();
     assert_eq!((calls.load(Ordering::SeqCst), outcome.failed), (2, 0));
 }
 
@@ -275,11 +285,11 @@ fn replicas_sweep_values_and_descriptions_reuse_saved_runs() {
     let stop = AtomicBool::new(false);
     let counting = Counting::new();
     let simulate = |s: &_| counting.simulate(s);
-    run_study(&file, &options(&out, 2), &simulate, &stop).unwrap();
+    run_study(&file, &run_options(&out, 2), &simulate, &stop).unwrap();
     assert_eq!(counting.take(), 18);
     let reference = tables(&out);
 
-    let mut more = options(&out, 2);
+    let mut more = run_options(&out, 2);
     more.replicas = Some(5);
     let outcome = run_study(&file, &more, &simulate, &stop).unwrap();
     assert_eq!((counting.take(), outcome.resumed), (6 * 2, 18));
@@ -287,7 +297,7 @@ fn replicas_sweep_values_and_descriptions_reuse_saved_runs() {
 
     // Back to 3 replicas: nothing runs, the two extra replicas' files go,
     // and the tables are those of the first study.
-    run_study(&file, &options(&out, 2), &simulate, &stop).unwrap();
+    run_study(&file, &run_options(&out, 2), &simulate, &stop).unwrap();
     assert_eq!(counting.take(), 0);
     assert_eq!(run_files(&out), 18);
     assert_same(&reference, &tables(&out));
@@ -302,7 +312,7 @@ fn replicas_sweep_values_and_descriptions_reuse_saved_runs() {
                 "Another description",
             ),
     );
-    let outcome = run_study(&file, &options(&out, 2), &simulate, &stop).unwrap();
+    let outcome = run_study(&file, &run_options(&out, 2), &simulate, &stop).unwrap();
     assert_eq!((counting.take(), outcome.resumed), (2 * 3, 18));
 }
 
@@ -315,7 +325,7 @@ fn outputs_of_an_earlier_study_do_not_survive_a_new_one() {
     let file = write_descriptor(dir.path(), PISTON);
     let out = dir.path().join("out");
     let stop = AtomicBool::new(false);
-    run_study(&file, &options(&out, 2), &fake, &stop).unwrap();
+    run_study(&file, &run_options(&out, 2), &fake, &stop).unwrap();
     for f in [
         "series.parquet",
         "histograms.parquet",
@@ -330,7 +340,7 @@ fn outputs_of_an_earlier_study_do_not_survive_a_new_one() {
         o.histograms.clear();
         Ok(o)
     };
-    let mut fresh = options(&out, 2);
+    let mut fresh = run_options(&out, 2);
     fresh.fresh = true;
     run_study(&file, &fresh, &scalars_only, &stop).unwrap();
     for f in [
@@ -363,7 +373,7 @@ fn a_second_study_on_the_same_out_dir_fails_clearly() {
     let out = dir.path().join("out");
     std::fs::create_dir_all(&out).unwrap();
     let held = bonkers::runner::lock::OutLock::acquire(&out).unwrap();
-    let err = run_study(&file, &options(&out, 2), &fake, &AtomicBool::new(false)).unwrap_err();
+    let err = run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false)).unwrap_err();
     assert_eq!(err.exit_code(), 1);
     let msg = err.to_string();
     assert!(msg.contains("another `study run`"), "{msg}");
@@ -373,7 +383,7 @@ fn a_second_study_on_the_same_out_dir_fails_clearly() {
     );
     assert!(!out.join("runs.parquet").exists());
     drop(held);
-    run_study(&file, &options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
+    run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
 }
 
 /// What a killed run leaves (a staging folder, temporary files) is removed
@@ -395,7 +405,7 @@ fn leftovers_of_a_killed_run_are_cleaned() {
     for f in &leftovers {
         std::fs::write(f, "partial").unwrap();
     }
-    run_study(&file, &options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
+    run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
     for f in &leftovers {
         assert!(!f.exists(), "{} left", f.display());
     }

@@ -4,11 +4,10 @@
 //! redoes exactly them; `study status` counts; locks keep parts apart from
 //! whole runs; `study slurm` writes the job array.
 
-use crate::study_common::{PISTON, assert_same, fake, write_descriptor};
+use crate::study_common::{PISTON, assert_same, fake, run_options, write_descriptor};
 use bonkers::model::run_spec::RunSpec;
 use bonkers::runner::lock::OutLock;
-use bonkers::runner::pipeline::{Slice, StudyOptions, run_slice};
-use bonkers::runner::progress::ProgressMode;
+use bonkers::runner::pipeline::{Slice, run_slice};
 use bonkers::runner::run::run_file;
 use bonkers::runner::shard::Shard;
 use bonkers::runner::store::read_parquet;
@@ -166,21 +165,6 @@ fn shards_in_separate_folders_are_joined_by_collect() {
     assert_same(&tables(&whole), &tables(&parts[0]));
 }
 
-fn options(out: &Path) -> StudyOptions {
-    StudyOptions {
-        out: Some(out.to_path_buf()),
-        threads: Some(2),
-        replicas: None,
-        quick: false,
-        fresh: false,
-        progress: ProgressMode::Quiet,
-        yes: false,
-        command_line: vec!["study".into(), "run".into()],
-        checkpoint_every: None,
-        force: false,
-    }
-}
-
 /// Whatever N, each run is computed by exactly one of the N shards.
 #[test]
 fn every_run_is_in_exactly_one_shard_whatever_n() {
@@ -197,7 +181,7 @@ fn every_run_is_in_exactly_one_shard_whatever_n() {
             let shard = Slice::Shard(Shard { index, count: n });
             run_slice(
                 &file,
-                &options(&out),
+                &run_options(&out, 2),
                 &shard,
                 &counting,
                 &AtomicBool::new(false),
