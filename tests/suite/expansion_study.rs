@@ -1,7 +1,7 @@
 //! Statistical regression tests of the expansion study (seeded; thresholds
 //! are four standard errors of the ensemble, never tuned to one outcome).
 
-use crate::study_common::ensemble;
+use crate::study_common::{ensemble, stats};
 use bonkers::model::run_output::RunOutput;
 use bonkers::model::run_spec::RunSpec;
 use bonkers::stats::summary::Stats;
@@ -50,15 +50,6 @@ sample_every = 0.5
 {extra}
 "#
     )
-}
-
-fn stats(runs: &[(RunSpec, RunOutput)], name: &str) -> Stats {
-    let v: Vec<f64> = runs
-        .iter()
-        .filter_map(|(_, o)| o.scalar(name))
-        .filter(|v| v.is_finite())
-        .collect();
-    Stats::of(&v)
 }
 
 /// The ensemble's left fraction at sample `i`, over the runs.

@@ -1,9 +1,7 @@
 //! Statistical regression tests of the heat study (seeded; thresholds are
 //! four standard errors of the ensemble, never tuned to one outcome).
 
-use crate::study_common::ensemble;
-use bonkers::model::run_output::RunOutput;
-use bonkers::model::run_spec::RunSpec;
+use crate::study_common::{ensemble, stats};
 use bonkers::stats::summary::Stats;
 use bonkers::studies::heat::{Gas, Line, Profile};
 
@@ -47,15 +45,6 @@ histograms = ["energy_x"]
 {extra}
 "#
     )
-}
-
-fn stats(runs: &[(RunSpec, RunOutput)], name: &str) -> Stats {
-    let v: Vec<f64> = runs
-        .iter()
-        .filter_map(|(_, o)| o.scalar(name))
-        .filter(|v| v.is_finite())
-        .collect();
-    Stats::of(&v)
 }
 
 fn within(s: &Stats, theory: f64, what: &str) {

@@ -195,3 +195,8 @@ pub fn run_options(out: &Path, threads: usize) -> StudyOptions {
         force: false,
     }
 }
+
+/// A scalar result over an ensemble's runs, from those that measured it finite.
+pub fn stats(runs: &[(RunSpec, RunOutput)], name: &str) -> bonkers::stats::summary::Stats {
+    bonkers::stats::summary::scalar(runs.iter().map(|(_, o)| o), name)
+}
