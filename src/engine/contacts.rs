@@ -6,6 +6,7 @@
 //! picks the partner by that function's rules, and passes over a partner
 //! whose own event comes first.
 
+use super::neighbours::Image;
 use super::vector::Vector;
 
 /// Partners per batch: more than most lists hold, few enough for the stack.
@@ -18,6 +19,8 @@ const LANES: usize = 4;
 #[derive(Debug, Clone)]
 pub struct Batch<const D: usize> {
     len: usize,
+    /// Each partner's index and image code.
+    partner: [(usize, Image); BATCH],
     r: [[f64; BATCH]; D],
     v: [[f64; BATCH]; D],
     sigma: [f64; BATCH],
@@ -32,6 +35,7 @@ impl<const D: usize> Batch<D> {
     pub fn new() -> Self {
         Batch {
             len: 0,
+            partner: [(0, 0); BATCH],
             r: [[0.0; BATCH]; D],
             v: [[0.0; BATCH]; D],
             sigma: [0.0; BATCH],
@@ -42,19 +46,24 @@ impl<const D: usize> Batch<D> {
         }
     }
 
-    pub fn len(&self) -> usize {
-        self.len
+    pub fn is_full(&self) -> bool {
+        self.len == BATCH
     }
 
-    pub fn clear(&mut self) {
-        self.len = 0;
-    }
-
-    /// Add a partner at separation `r` (from the particle to it) with
-    /// relative velocity `v` (its velocity less the particle's).
+    /// Add partner `partner` (index, image) at separation `r` (from the
+    /// particle to it) with relative velocity `v` (its velocity less the
+    /// particle's), whose own next event is due at `due`.
     #[inline(always)]
-    pub fn push(&mut self, r: &Vector<D>, v: &Vector<D>, sigma: f64, due: f64) {
+    pub fn push(
+        &mut self,
+        partner: (usize, Image),
+        r: &Vector<D>,
+        v: &Vector<D>,
+        sigma: f64,
+        due: f64,
+    ) {
         let m = self.len;
+        self.partner[m] = partner;
         for k in 0..D {
             self.r[k][m] = r[k];
             self.v[k][m] = v[k];
@@ -120,8 +129,9 @@ impl<const D: usize> Batch<D> {
     /// without computing it (c >= 2|b| limit), which decides differently only
     /// when round-off puts the time within an ulp of the limit, so the same
     /// test is applied here to the rare winners.
+    /// The batch is empty afterwards.
     #[inline(always)]
-    pub fn earliest(&mut self, now: f64, best_t: &mut f64) -> Option<usize> {
+    pub fn earliest(&mut self, now: f64, best_t: &mut f64) -> Option<(usize, Image)> {
         self.all_contact_times();
         let mut found = None;
         for m in 0..self.len {
@@ -132,9 +142,10 @@ impl<const D: usize> Batch<D> {
                     continue;
                 }
                 *best_t = t;
-                found = Some(m);
+                found = Some(self.partner[m]);
             }
         }
+        self.len = 0;
         found
     }
 }

@@ -14,7 +14,7 @@ use rand_chacha::ChaCha8Rng;
 use super::boundary::{SimBox, Wall, wall_time};
 use super::build::{BuildError, check_overlaps, validate};
 use super::collide::{bounce, line_contact_time};
-use super::contacts::{BATCH, Batch};
+use super::contacts::Batch;
 use super::neighbours::{Image, Neighbourhood, PLANE, image_shift, no_shift, separation};
 use super::observer::{Observer, PairCollision, Snapshot, WallHit};
 use super::particle::Particle;
@@ -404,9 +404,8 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             }
         } else {
             let batch = &mut self.batch;
-            let mut partners = [(0, 0); BATCH];
-            batch.clear();
-            for (j, image) in self.neighbours.candidates(i) {
+            let mut candidates = self.neighbours.candidates(i).peekable();
+            while let Some((j, image)) = candidates.next() {
                 let q = &self.particles[j];
                 let r = separation(&x_i, &q.position_at(now), image, &self.shifts, N::PLANES);
                 let v = sub(&q.vel, &p.vel);
@@ -417,17 +416,18 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 } else {
                     v
                 };
-                partners[batch.len()] = (j, image);
-                batch.push(&r, &v, p.radius + q.radius, self.queue.time_of(j));
-                if batch.len() == BATCH {
-                    if let Some(m) = batch.earliest(now, &mut best_t) {
-                        best = pair_with(partners[m].0, partners[m].1, &self.stamp);
-                    }
-                    batch.clear();
+                batch.push(
+                    (j, image),
+                    &r,
+                    &v,
+                    p.radius + q.radius,
+                    self.queue.time_of(j),
+                );
+                if (batch.is_full() || candidates.peek().is_none())
+                    && let Some((j, image)) = batch.earliest(now, &mut best_t)
+                {
+                    best = pair_with(j, image, &self.stamp);
                 }
-            }
-            if let Some(m) = batch.earliest(now, &mut best_t) {
-                best = pair_with(partners[m].0, partners[m].1, &self.stamp);
             }
         }
         self.next[i] = best;
