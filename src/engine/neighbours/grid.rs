@@ -3,16 +3,23 @@
 //! and in a few contiguous reads. On periodic axes the grid wraps, and a
 //! point found across the boundary comes with the image code of the shift
 //! that brings it next to the one asked about.
+//!
+//! Positions are kept in single precision, half the bytes to read: a search
+//! only has to find a superset of the points within its reach, so it widens
+//! the reach by `rounding` and the rounding can never hide a point.
 
 use super::Image;
 use crate::engine::boundary::SimBox;
 use crate::engine::prefetch::prefetch;
-use crate::engine::vector::Vector;
+use crate::engine::vector::{Vector, norm2};
 
 const NONE: u32 = u32::MAX;
 
+/// Where a point is, in single precision.
+pub type Place<const D: usize> = [f32; D];
+
 /// A cell's points: each one's index and where it is.
-pub type Points<const D: usize> = [(u32, Vector<D>)];
+pub type Points<const D: usize> = [(u32, Place<D>)];
 
 #[derive(Debug, Clone)]
 pub struct Grid<const D: usize> {
@@ -22,9 +29,11 @@ pub struct Grid<const D: usize> {
     /// Linear-index stride per axis.
     stride: [usize; D],
     /// Each cell's points and where they are.
-    cells: Vec<Vec<(u32, Vector<D>)>>,
+    cells: Vec<Vec<(u32, Place<D>)>>,
     /// Each point's cell.
     cell: Vec<u32>,
+    /// See [`Grid::rounding`].
+    rounding: f64,
 }
 impl<const D: usize> Grid<D> {
     /// A grid for `points` points whose cells are at least `min_width` wide,
@@ -61,14 +70,23 @@ impl<const D: usize> Grid<D> {
             stride,
             cells: Self::empty_cells(stride[D - 1] * n[D - 1] as usize, points),
             cell: vec![NONE; points],
+            rounding: 2.0 * f32::EPSILON as f64 * norm2(&sim_box.size).sqrt(),
         }
+    }
+
+    /// A bound on how far a stored position is from the true one, with a
+    /// margin: rounding to single precision moves each coordinate by at most
+    /// half a unit in the last place of the box's length on that axis, so
+    /// the whole point by at most half an epsilon of the box's diagonal.
+    pub fn rounding(&self) -> f64 {
+        self.rounding
     }
 
     /// Empty cells with room for twice their expected share of the points,
     /// allocated one after the other: neighbouring cells then sit close in
     /// memory, which matters once the system outgrows the caches (few cells
     /// ever outgrow their room and move).
-    fn empty_cells(cells: usize, points: usize) -> Vec<Vec<(u32, Vector<D>)>> {
+    fn empty_cells(cells: usize, points: usize) -> Vec<Vec<(u32, Place<D>)>> {
         let room = (2 * points).div_ceil(cells.max(1)).max(1);
         (0..cells).map(|_| Vec::with_capacity(room)).collect()
     }
@@ -85,17 +103,18 @@ impl<const D: usize> Grid<D> {
             .map(|k| c[k] as usize * self.stride[k])
             .sum::<usize>();
         let old = self.cell[i] as usize;
+        let x = x.map(|x| x as f32);
         if self.cell[i] != NONE {
             let members = &mut self.cells[old];
             let at = members.iter().position(|m| m.0 == i as u32).expect("filed");
             if old == cell {
-                members[at].1 = *x;
+                members[at].1 = x;
                 return;
             }
             members.swap_remove(at);
         }
         self.cell[i] = cell as u32;
-        self.cells[cell].push((i as u32, *x));
+        self.cells[cell].push((i as u32, x));
     }
 
     /// The (up to) 3^D cells around position `x` (x itself may be filed
@@ -171,7 +190,7 @@ impl<const D: usize> Grid<D> {
 
     /// Call `f(j, x_j)` for every point filed in the slab of cells whose
     /// axis-0 range meets [lo, hi].
-    pub fn for_each_in_slab(&self, lo: f64, hi: f64, mut f: impl FnMut(usize, &Vector<D>)) {
+    pub fn for_each_in_slab(&self, lo: f64, hi: f64, mut f: impl FnMut(usize, &Place<D>)) {
         let first = ((lo / self.width[0]).floor().max(0.0) as u32).min(self.n[0] - 1);
         let last = ((hi / self.width[0]).floor().max(0.0) as u32).min(self.n[0] - 1);
         let rest: usize = (1..D).map(|k| self.n[k] as usize).product();

@@ -126,16 +126,9 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         &self.entries[i * self.cap..i * self.cap + self.len[i] as usize]
     }
 
-    /// Do the neighbourhoods of i and of j (as image `image`, its centre at
-    /// `c_j`) overlap? Each is a ball of the largest radius and the shell.
-    #[inline(always)]
-    fn overlap(&self, i: usize, image: Image, c_j: &Vector<D>) -> bool {
-        if PLANES && image == PLANE {
-            return (c_j[0] - self.centre[i][0]).abs() < self.plane_reach;
-        }
-        let s = &self.shifts[image as usize];
-        let r: Vector<D> = std::array::from_fn(|k| c_j[k] + s[k] - self.centre[i][k]);
-        norm2(&r) < self.reach * self.reach
+    /// Does the neighbourhood of ball i meet the slab of the plane k?
+    fn meets_plane(&self, i: usize, k: usize) -> bool {
+        (self.centre[k][0] - self.centre[i][0]).abs() < self.plane_reach
     }
 
     /// Put `e` into list i, keeping it sorted.
@@ -190,17 +183,19 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         found.clear();
         let c = &self.centre[i];
         if PLANES && Some(i) == self.plane {
-            let reach = self.plane_reach;
+            let reach = self.plane_reach + self.grid.rounding();
             self.grid
                 .for_each_in_slab(c[0] - reach, c[0] + reach, |j, c_j| {
-                    if self.overlap(i, PLANE, c_j) {
+                    if (c_j[0] as f64 - c[0]).abs() < reach {
                         found.push(pack(j, PLANE));
                     }
                 });
         } else {
             // Most points tested are not neighbours, at random: write every
             // one and keep it or not without a branch that would mispredict.
-            let reach2 = self.reach * self.reach;
+            // The grid's positions are rounded: widen the reach to match.
+            let reach = self.reach + self.grid.rounding();
+            let reach2 = reach * reach;
             let (cells, count) = self.grid.cells_around(c);
             let cells = &cells[..count];
             found.resize(cells.iter().map(|(_, points)| points.len()).sum(), 0);
@@ -208,14 +203,14 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
             for &(image, points) in cells {
                 let s = &self.shifts[image as usize];
                 for &(j, c_j) in points {
-                    let r: Vector<D> = std::array::from_fn(|k| c_j[k] + s[k] - c[k]);
+                    let r: Vector<D> = std::array::from_fn(|k| c_j[k] as f64 + s[k] - c[k]);
                     found[kept] = pack(j as usize, image);
                     kept += (j as usize != i && norm2(&r) < reach2) as usize;
                 }
             }
             found.truncate(kept);
             if let Some(k) = self.plane.filter(|_| PLANES)
-                && self.overlap(i, PLANE, &self.centre[k])
+                && self.meets_plane(i, k)
             {
                 found.push(pack(k, PLANE));
             }
@@ -456,5 +451,33 @@ impl<const D: usize, const PLANES: bool> Persist<D> for NeighbourList<D, PLANES>
         }
         lists.list_all();
         Ok(lists)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two spheres whose centres are a hair inside the reach, in the far
+    /// corner of a large box where single-precision rounding of the grid's
+    /// positions is largest: each must be in the other's list.
+    #[test]
+    fn a_pair_just_inside_the_reach_is_listed_despite_rounding() {
+        let side = 3072.0;
+        let sim_box = SimBox::<3>::periodic([side; 3]);
+        let corner = [side - 0.3, side - 1.7, side - 0.9];
+        let ball = |x| Particle::new(x, [1.0, 0.0, 0.0], 1.0, 0.5);
+        let pair = |partner| vec![ball(corner), ball(partner)];
+        // The reach depends on the number of particles, not where they are.
+        let reach = NeighbourList::<3>::build(&pair([1.0; 3]), &sim_box)
+            .unwrap()
+            .reach;
+        for direction in [[1.0, 0.0, 0.0], [0.6, -0.8, 0.0], [0.48, 0.6, 0.64]] {
+            let inside = reach * (1.0 - 1e-12);
+            let partner = std::array::from_fn(|k| corner[k] - inside * direction[k]);
+            let lists = NeighbourList::<3>::build(&pair(partner), &sim_box).unwrap();
+            let listed = |i: usize, j: usize| lists.candidates(i).any(|(k, _)| k == j);
+            assert!(listed(0, 1) && listed(1, 0), "{direction:?}, reach {reach}");
+        }
     }
 }
