@@ -79,6 +79,9 @@ pub struct Simulation<const D: usize, N: Neighbourhood<D>, O: Observer<D>> {
     pub(super) samples_taken: u64,
     pub(super) sample_start: f64,
     pub(super) rng: ChaCha8Rng,
+    /// Whether a prediction asks for its partners' records ahead (worth it
+    /// only once the system outgrows the caches).
+    pub(super) prefetch_partners: bool,
     /// Room for a prediction's partners (kept to spare its setting up).
     pub(super) batch: Batch<D>,
     pub counts: Counts,
@@ -119,6 +122,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             sample_start: 0.0,
             rng: ChaCha8Rng::seed_from_u64(seed),
             batch: Batch::new(),
+            prefetch_partners: worth_prefetching(n),
             counts: Counts::default(),
             observer,
         };
@@ -381,8 +385,10 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         }
         // Partners' records lie scattered in memory: ask for all of them
         // first, so that their cache misses overlap.
-        for (j, _) in self.neighbours.candidates(i) {
-            prefetch(&self.particles[j]);
+        if self.prefetch_partners {
+            for (j, _) in self.neighbours.candidates(i) {
+                prefetch(&self.particles[j]);
+            }
         }
         let x_i = p.position_at(now);
         if D == 1 {
@@ -503,6 +509,14 @@ pub fn degrees_of_freedom<const D: usize>(particles: &[Particle<D>], sim_box: &S
         sim_box.axes.iter().filter(|a| a.is_periodic()).count()
     };
     free.saturating_sub(conserved) as f64
+}
+
+/// Whether a system of `n` particles has outgrown the caches enough for
+/// predictions to ask for their partners' records ahead: measured with
+/// spheres at packing 0.45 on a machine with 1 MiB of L2 per core, asking
+/// costs 1 % at N = 4,000 and saves 1 % at 8,788 and 5 % from 16,384 on.
+pub(super) fn worth_prefetching(n: usize) -> bool {
+    n >= 6000
 }
 
 /// A collision with j as it is now (its stamp read from `stamps`).
