@@ -10,6 +10,7 @@ pub mod hansen_goos;
 pub mod heat;
 pub mod heat_free;
 pub mod henderson;
+pub mod kolafa_rottner;
 pub mod maxwell;
 pub mod microcanonical;
 pub mod mixing;

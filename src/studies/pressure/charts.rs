@@ -4,6 +4,7 @@
 
 use super::equations::{self, Equation};
 use super::finite_size::Fit;
+use super::phases::DISK_FLUID_ENDS;
 use super::points::Point;
 use crate::model::chart::{ChartSpec, Layer, Paint, colour};
 
@@ -205,12 +206,13 @@ pub fn finite_size_chart(fits: &[Fit]) -> ChartSpec {
     }
 }
 
-/// βPσ² = Z ρ of the dense disks of one size, with the fluid series.
+/// βPσ² = Z ρ of the dense disks of one size, with the fluid's equation as
+/// far as the fluid goes.
 pub fn dense_disks_chart(pts: &[&Point]) -> ChartSpec {
     let rho = |eta: f64| 4.0 * eta / std::f64::consts::PI;
     let paint = colour(1);
-    // No fluid equation is drawn: the virial series is 14 % low here and
-    // would hide a loop of a few tenths of a percent; a line joins the means.
+    // A line joins the means; the fluid's equation (at N → ∞) is drawn up to
+    // where the fluid ends, not beyond: it knows nothing of the hexatic phase.
     let mut layers = vec![Layer::Line {
         points: pts.iter().map(|p| (p.eta, p.z.mean * rho(p.eta))).collect(),
         paint: paint.faded(0.5),
@@ -218,6 +220,21 @@ pub fn dense_disks_chart(pts: &[&Point]) -> ChartSpec {
         dashed: true,
         label: None,
     }];
+    let fluid = &equations::of(2)[0];
+    let first = pts.iter().map(|p| p.eta).fold(f64::INFINITY, f64::min);
+    if first < DISK_FLUID_ENDS {
+        let span = DISK_FLUID_ENDS - first;
+        layers.push(Layer::Line {
+            points: (0..=50)
+                .map(|k| first + span * k as f64 / 50.0)
+                .map(|eta| (eta, (fluid.z)(eta) * rho(eta)))
+                .collect(),
+            paint: colour(0),
+            width: 1,
+            dashed: false,
+            label: Some(format!("{} (fluid, N → ∞)", fluid.name)),
+        });
+    }
     markers(&mut layers, pts, paint, "disks", |p| {
         (p.z.mean * rho(p.eta), p.error().0 * rho(p.eta))
     });

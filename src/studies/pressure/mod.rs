@@ -50,7 +50,7 @@ impl Study for Pressure {
         "pressure"
     }
     fn about(&self) -> &'static str {
-        "compressibility factor Z = βP/ρ from the wall or virial pressure against packing fraction, with equilibration cuts, block-average errors and the 1/N extrapolation, beside Tonks (rods), the virial series and Henderson (disks), Hansen-Goos, Carnahan-Starling-Kolafa, the virial series and Carnahan-Starling (spheres)"
+        "compressibility factor Z = βP/ρ from the wall or virial pressure against packing fraction, with equilibration cuts, block-average errors and the 1/N extrapolation, beside Tonks (rods), Kolafa-Rottner, the virial series and Henderson (disks), Hansen-Goos, Carnahan-Starling-Kolafa, the virial series and Carnahan-Starling (spheres)"
     }
     fn results(&self) -> &'static [&'static str] {
         RESULTS

@@ -10,6 +10,9 @@
 //!   melting at 0.545, crystal above (Hoover and Ree 1968); a fluid above
 //!   0.494 is metastable and may crystallise during a run.
 
+/// Where the disks' fluid ends (Bernard and Krauth 2011).
+pub const DISK_FLUID_ENDS: f64 = 0.700;
+
 /// Packing fractions within this of a boundary count as on it (box lengths
 /// are written to 10 digits, so a point meant at 0.72 is 0.72 + 1e-10).
 const SAME: f64 = 1e-7;
@@ -20,7 +23,7 @@ pub fn label(d: usize, eta: f64) -> &'static str {
     let eta = eta - SAME;
     match d {
         1 => "fluid",
-        2 if eta <= 0.700 => "fluid",
+        2 if eta <= DISK_FLUID_ENDS => "fluid",
         2 if eta <= 0.716 => "fluid-hexatic coexistence",
         2 if eta <= 0.720 => "hexatic",
         2 => "solid",

@@ -44,7 +44,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
                 &mut md,
                 "pressure_deviation.svg",
                 chart,
-                "Z over each dimension's reference equation (Tonks, the disks' virial series with its tail, Hansen-Goos), minus 1, at the points where it holds; dashed: the other equations against the same reference. The points are at finite N: see the 1/N extrapolation",
+                "Z over each dimension's reference equation (Tonks, Kolafa-Rottner, Hansen-Goos), minus 1, at the points where it holds; dashed: the other equations against the same reference. The points are at finite N: see the 1/N extrapolation",
             );
         }
         let examples = time_examples(&all);
@@ -71,7 +71,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
             &mut md,
             "pressure_dense_disks.svg",
             charts::dense_disks_chart(&dense),
-            "The pressure βPσ² = Zρ of the disks near the liquid-hexatic transition (mean ± error bar; dashed: joining the means). Where it falls as η grows is the finite box's loop (see the table below)",
+            "The pressure βPσ² = Zρ of the disks near the liquid-hexatic transition (mean ± error bar; dashed: joining the means; solid: Kolafa and Rottner's fluid equation, for N → ∞, up to where the fluid ends). Where the pressure falls as η grows is the finite box's loop (see the table below)",
         );
     }
     md.push_str(&headline(&all));
@@ -503,11 +503,14 @@ replicas (each its own start and velocities) when there are at least 16; with fe
 and the runs' own error combined, because a standard error from n replicas is itself uncertain by \
 1/√(2(n − 1)) (41 % for 4), and 4 replicas that happen to agree closely give z-scores of 5 or more about 1 % of \
 the time. `error from` says which was used, and with how many replicas. \
-**Theory**: rods, Tonks 1936 (exact). Disks, the virial series with the coefficients up to B10 of Clisby and \
-McCoy 2006 (J. Stat. Phys. 122, 15; B3 and B4 exact) plus the terms left out continued geometrically (5e-5 of Z \
-at η = 0.3, 7e-4 at 0.4), and Henderson 1975, Z = (1 + η²/8)/(1 − η)², 2.5e-4 above the series at 0.3; no \
-accurate published fit for the dense disk fluid (Kolafa and Rottner 2006) could be checked here, so points \
-from 0.5 on have no reference equation. Spheres, Hansen-Goos 2016 (J. Chem. Phys. 144, 164506), \
+**Theory**: rods, Tonks 1936 (exact). Disks, Kolafa and Rottner 2006 (Mol. Phys. 104, 3435), \
+Z = Σ Cₙ xⁿ with x = η/(1 − η), fitted to simulations of the fluid extrapolated to infinite N up to η = 0.707 \
+(the last 0.008 of which may keep finite-size effects) with the known virial coefficients built in: its \
+expansion gives B3-B5 exactly and B6-B10 within Clisby and McCoy's Monte Carlo errors, and it is the \
+reference to η = 0.68, as far as this project's own extrapolations check it (docs/pressure.md); the virial series with \
+the coefficients up to B10 of Clisby and McCoy 2006 (J. Stat. Phys. 122, 15; B3 and B4 exact) plus the terms \
+left out continued geometrically (5e-5 of Z at η = 0.3, 7e-4 at 0.4, 0.2 % high at 0.6); and Henderson 1975, \
+Z = (1 + η²/8)/(1 − η)², 2.5e-4 above the series at 0.3. Spheres, Hansen-Goos 2016 (J. Chem. Phys. 144, 164506), \
 Z = 8 ln(1 − η)/η + p(η)/(1 − η)³ with a degree-7 polynomial p built on the virial coefficients and fitted to \
 the fluid's simulations: its expansion gives B2-B4 exactly and B5-B10 within 0.4 %; Carnahan-Starling-Kolafa \
 (Boublík and Nezbeda 1986), Z = (1 + η + η² − ⅔(η³ + η⁴))/(1 − η)³, within 1e-4 of it up to 0.4; the spheres' \
