@@ -4,7 +4,9 @@
 //! record is trusted only if its checksum holds; a record that is a link to
 //! /dev/zero, a pipe or a folder neither hangs a run nor fails it with exit 1.
 
-use crate::study_common::{PISTON, assert_same, fake, run_options, tables, write_descriptor};
+use crate::study_common::{
+    PISTON, assert_same, fake, run_into, run_options, tables, write_descriptor,
+};
 use bonkers::model::run_output::RunOutput;
 use bonkers::model::run_spec::RunSpec;
 use bonkers::runner::checkpoint::{self, Place};
@@ -208,13 +210,7 @@ fn a_lock_file_that_is_a_link_is_not_written_through() {
     );
     assert!(OutLock::acquire(&piped).is_err());
     let file = write_descriptor(dir.path(), PISTON);
-    let err = run_study(
-        &file,
-        &run_options(&piped, 2),
-        &fake,
-        &AtomicBool::new(false),
-    )
-    .unwrap_err();
+    let err = run_into(&file, &piped, 2, &fake).unwrap_err();
     assert_eq!(err.exit_code(), 2, "{err}");
     assert!(err.to_string().contains("is not a regular file"), "{err}");
 }
@@ -381,13 +377,7 @@ fn only_names_bonkers_makes_are_removed() {
         (
             "resume",
             |f, o, c| {
-                run_study(
-                    f,
-                    &run_options(o, 2),
-                    &|s| c.simulate(s),
-                    &AtomicBool::new(false),
-                )
-                .unwrap();
+                run_into(f, o, 2, &|s| c.simulate(s)).unwrap();
                 c.take()
             },
             0,
@@ -440,7 +430,7 @@ fn only_names_bonkers_makes_are_removed() {
         let dir = tempfile::tempdir().unwrap();
         let file = write_descriptor(dir.path(), PISTON);
         let out = dir.path().join("out");
-        run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
+        run_into(&file, &out, 2, &fake).unwrap();
         let made = tables(&out);
         plant(&out, &USERS);
         plant(&out, &LEFTOVERS);
@@ -486,7 +476,7 @@ fn a_folder_no_study_made_is_refused_unless_forced() {
         std::fs::create_dir(&out).unwrap();
         plant(&out, holds);
         let before = snapshot(&out);
-        let result = run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false));
+        let result = run_into(&file, &out, 2, &fake);
         assert_eq!(result.is_ok(), accepted, "{holds:?}: {result:?}");
         if accepted {
             assert!(out.join("summary.parquet").is_file());
@@ -518,13 +508,7 @@ fn a_folder_no_study_made_is_refused_unless_forced() {
     // A file is not a folder.
     let not_a_folder = dir.path().join("file");
     std::fs::write(&not_a_folder, "x").unwrap();
-    let err = run_study(
-        &file,
-        &run_options(&not_a_folder, 2),
-        &fake,
-        &AtomicBool::new(false),
-    )
-    .unwrap_err();
+    let err = run_into(&file, &not_a_folder, 2, &fake).unwrap_err();
     assert_eq!(err.exit_code(), 2, "{err}");
     assert!(err.to_string().contains("is not a folder"), "{err}");
 }

@@ -3,7 +3,9 @@
 //! missing runs, lists failed ones, and a plan run in parts adds up to one
 //! whole run.
 
-use crate::study_common::{PISTON, assert_same, fake, run_options, tables, write_descriptor};
+use crate::study_common::{
+    PISTON, assert_same, fake, run_into, run_options, tables, write_descriptor,
+};
 use bonkers::descriptor::errors::StudyError;
 use bonkers::descriptor::load::parse;
 use bonkers::model::run_output::RunOutput;
@@ -60,7 +62,7 @@ fn collect_after_run_gives_the_same_tables() {
     let dir = tempfile::tempdir().unwrap();
     let file = write_descriptor(dir.path(), PISTON);
     let out = dir.path().join("out");
-    run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
+    run_into(&file, &out, 2, &fake).unwrap();
     let made_by_run = tables(&out);
     for table in [
         "runs.parquet",
@@ -94,7 +96,7 @@ fn study_collect_on_the_command_line() {
     let dir = tempfile::tempdir().unwrap();
     let file = write_descriptor(dir.path(), PISTON);
     let out = dir.path().join("out");
-    run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
+    run_into(&file, &out, 2, &fake).unwrap();
     let made_by_run = tables(&out);
     let (file_arg, out_arg) = (file.to_str().unwrap(), out.to_str().unwrap());
     let (code, err) = study(&["collect", file_arg, "--out", out_arg]);

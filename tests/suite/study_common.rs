@@ -2,12 +2,14 @@
 //! fake simulator (outputs are a pure function of the run's seed and params).
 #![allow(dead_code)]
 
+use bonkers::descriptor::errors::StudyError;
 use bonkers::descriptor::load::parse;
 use bonkers::model::run_output::{Histogram, RunOutput, Series};
 use bonkers::model::run_spec::RunSpec;
-use bonkers::runner::pipeline::StudyOptions;
+use bonkers::runner::pipeline::{StudyOptions, StudyOutcome, run_study};
 use bonkers::runner::plan::plan;
 use bonkers::runner::progress::ProgressMode;
+use bonkers::runner::run::SimulateFn;
 use bonkers::runner::store::read_parquet;
 use polars::prelude::DataFrame;
 use std::path::{Path, PathBuf};
@@ -194,6 +196,22 @@ pub fn run_options(out: &Path, threads: usize) -> StudyOptions {
         checkpoint_every: None,
         force: false,
     }
+}
+
+/// `run_study` of `file` into `out` with `run_options(out, threads)`, never
+/// asked to stop.
+pub fn run_into(
+    file: &Path,
+    out: &Path,
+    threads: usize,
+    simulate: &SimulateFn<'_>,
+) -> Result<StudyOutcome, StudyError> {
+    run_study(
+        file,
+        &run_options(out, threads),
+        simulate,
+        &AtomicBool::new(false),
+    )
 }
 
 /// A scalar result over an ensemble's runs, from those that measured it finite.

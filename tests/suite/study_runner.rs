@@ -2,7 +2,7 @@
 //! resume after interruption, --fresh, failures, and the Parquet tables.
 
 use crate::study_common::{
-    Interrupting, PISTON, assert_same, fake, run_options, tables, write_descriptor,
+    Interrupting, PISTON, assert_same, fake, run_into, run_options, tables, write_descriptor,
 };
 use bonkers::descriptor::errors::StudyError;
 use bonkers::descriptor::load::parse;
@@ -66,7 +66,7 @@ fn runs_table_has_the_promised_columns() {
     let dir = tempfile::tempdir().unwrap();
     let file = write_descriptor(dir.path(), PISTON);
     let out = dir.path().join("out");
-    run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
+    run_into(&file, &out, 2, &fake).unwrap();
     let runs = read_parquet(&out.join("runs.parquet")).unwrap();
     let names: Vec<String> = runs
         .get_column_names()
@@ -127,13 +127,7 @@ fn an_interrupted_study_resumes_with_only_the_missing_runs() {
     let dir = tempfile::tempdir().unwrap();
     let file = write_descriptor(dir.path(), PISTON);
     let reference = dir.path().join("reference");
-    run_study(
-        &file,
-        &run_options(&reference, 1),
-        &fake,
-        &AtomicBool::new(false),
-    )
-    .unwrap();
+    run_into(&file, &reference, 1, &fake).unwrap();
 
     let out = dir.path().join("out");
     let interrupting = Interrupting::new(5);
@@ -153,13 +147,7 @@ fn an_interrupted_study_resumes_with_only_the_missing_runs() {
         calls.fetch_add(1, Ordering::SeqCst);
         fake(s)
     };
-    let outcome = run_study(
-        &file,
-        &run_options(&out, 4),
-        &counting,
-        &AtomicBool::new(false),
-    )
-    .unwrap();
+    let outcome = run_into(&file, &out, 4, &counting).unwrap();
     assert_eq!(calls.load(Ordering::SeqCst), 18 - saved);
     assert_eq!((outcome.ran, outcome.resumed), (18 - saved, saved));
     assert_same(&tables(&reference), &tables(&out));
@@ -170,13 +158,7 @@ fn an_interrupted_study_resumes_with_only_the_missing_runs() {
         std::fs::remove_file(run_file(&out, specs[id].seed)).unwrap();
     }
     calls.store(0, Ordering::SeqCst);
-    run_study(
-        &file,
-        &run_options(&out, 2),
-        &counting,
-        &AtomicBool::new(false),
-    )
-    .unwrap();
+    run_into(&file, &out, 2, &counting).unwrap();
     assert_eq!(calls.load(Ordering::SeqCst), 2);
     assert_same(&tables(&reference), &tables(&out));
 }
@@ -221,13 +203,7 @@ fn failing_and_panicking_runs_are_recorded_and_the_rest_go_on() {
         5 => panic!("engine bug"),
         _ => fake(s),
     };
-    let outcome = run_study(
-        &file,
-        &run_options(&out, 2),
-        &flaky,
-        &AtomicBool::new(false),
-    )
-    .unwrap();
+    let outcome = run_into(&file, &out, 2, &flaky).unwrap();
     assert_eq!((outcome.ran, outcome.failed), (18, 2));
     let runs = read_parquet(&out.join("runs.parquet")).unwrap();
     let status = runs.column("status").unwrap().str().unwrap();
@@ -241,13 +217,7 @@ fn failing_and_panicking_runs_are_recorded_and_the_rest_go_on() {
         calls.fetch_add(1, Ordering::SeqCst);
         fake(s)
     };
-    let outcome = run_study(
-        &file,
-        &run_options(&out, 2),
-        &counting,
-        &AtomicBool::new(false),
-    )
-    .unwrap();
+    let outcome = run_into(&file, &out, 2, &counting).unwrap();
     assert_eq!((calls.load(Ordering::SeqCst), outcome.failed), (2, 0));
 }
 
@@ -373,7 +343,7 @@ fn a_second_study_on_the_same_out_dir_fails_clearly() {
     let out = dir.path().join("out");
     std::fs::create_dir_all(&out).unwrap();
     let held = bonkers::runner::lock::OutLock::acquire(&out).unwrap();
-    let err = run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false)).unwrap_err();
+    let err = run_into(&file, &out, 2, &fake).unwrap_err();
     assert_eq!(err.exit_code(), 1);
     let msg = err.to_string();
     assert!(msg.contains("another `study run`"), "{msg}");
@@ -383,7 +353,7 @@ fn a_second_study_on_the_same_out_dir_fails_clearly() {
     );
     assert!(!out.join("runs.parquet").exists());
     drop(held);
-    run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
+    run_into(&file, &out, 2, &fake).unwrap();
 }
 
 /// What a killed run leaves (a staging folder, temporary files) is removed
@@ -405,7 +375,7 @@ fn leftovers_of_a_killed_run_are_cleaned() {
     for f in &leftovers {
         std::fs::write(f, "partial").unwrap();
     }
-    run_study(&file, &run_options(&out, 2), &fake, &AtomicBool::new(false)).unwrap();
+    run_into(&file, &out, 2, &fake).unwrap();
     for f in &leftovers {
         assert!(!f.exists(), "{} left", f.display());
     }
