@@ -15,9 +15,14 @@ pub const NAMES: [&str; 3] = [
 ];
 
 fn curve(top: f64, f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
+    curve_from(0.0, top, f)
+}
+
+/// `f` at 201 packing fractions from `first` to `top`.
+fn curve_from(first: f64, top: f64, f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
     (0..=200)
         .map(|k| {
-            let eta = top * k as f64 / 200.0;
+            let eta = first + (top - first) * k as f64 / 200.0;
             (eta, f(eta))
         })
         .collect()
@@ -47,8 +52,11 @@ pub fn z_chart(all: &[Point]) -> ChartSpec {
         let paint = colour(d - 1);
         let reach = pts.iter().map(|p| p.eta).fold(0.0, f64::max) * 1.02;
         for (i, e) in equations::of(d).iter().enumerate() {
-            // Each curve up to where it is meant to hold (rods: to the data).
-            let end = reach.min(e.holds_below.max(0.3) + 0.05);
+            // Each curve up to where it is meant to hold (rods: to the data),
+            // and never past where its formula means anything.
+            let end = reach
+                .min(e.holds_below.max(0.3) + 0.05)
+                .min(e.defined_below);
             layers.push(Layer::Line {
                 points: curve(end, e.z),
                 paint: paint.faded(if i == 0 { 1.0 } else { 0.6 }),
@@ -223,12 +231,8 @@ pub fn dense_disks_chart(pts: &[&Point]) -> ChartSpec {
     let fluid = &equations::of(2)[0];
     let first = pts.iter().map(|p| p.eta).fold(f64::INFINITY, f64::min);
     if first < DISK_FLUID_ENDS {
-        let span = DISK_FLUID_ENDS - first;
         layers.push(Layer::Line {
-            points: (0..=50)
-                .map(|k| first + span * k as f64 / 50.0)
-                .map(|eta| (eta, (fluid.z)(eta) * rho(eta)))
-                .collect(),
+            points: curve_from(first, DISK_FLUID_ENDS, |eta| (fluid.z)(eta) * rho(eta)),
             paint: colour(0),
             width: 1,
             dashed: false,

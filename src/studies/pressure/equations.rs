@@ -13,12 +13,16 @@ pub struct Equation {
     /// Packing fraction up to which it is expected to be within ~1e-3 of
     /// the equilibrium fluid's Z; the report flags points beyond it.
     pub holds_below: f64,
+    /// Packing fraction beyond which the formula means nothing at all (a
+    /// fit's range); charts never draw it further.
+    pub defined_below: f64,
 }
 
 const RODS: &[Equation] = &[Equation {
     name: "Tonks (exact)",
     z: tonks::z,
     holds_below: 1.0,
+    defined_below: f64::INFINITY,
 }];
 
 const DISKS: &[Equation] = &[
@@ -30,18 +34,22 @@ const DISKS: &[Equation] = &[
         // 0.1 % above it.
         z: kolafa_rottner::z,
         holds_below: 0.681,
+        // Fitted to rho sigma^2 = 0.90; beyond, its x^57 term explodes.
+        defined_below: 0.707,
     },
     Equation {
         name: "virial series to B10 + tail",
         // The estimated tail is 5e-5 of Z at 0.3, 7e-4 at 0.4, 0.6 % at 0.5.
         z: disk_virial::resummed,
         holds_below: 0.4,
+        defined_below: f64::INFINITY,
     },
     Equation {
         name: "Henderson 1975",
         // 2.5e-4 above the resummed series at 0.3, 1.4e-3 at 0.4.
         z: henderson::z,
         holds_below: 0.35,
+        defined_below: f64::INFINITY,
     },
 ];
 
@@ -52,24 +60,28 @@ const SPHERES: &[Equation] = &[
         // stable fluid ends at freezing.
         z: hansen_goos::z,
         holds_below: 0.494,
+        defined_below: f64::INFINITY,
     },
     Equation {
         name: "Carnahan-Starling-Kolafa",
         // Within 1e-4 of Hansen-Goos up to 0.4, 6e-4 above it at 0.49.
         z: carnahan_starling_kolafa::z,
         holds_below: 0.494,
+        defined_below: f64::INFINITY,
     },
     Equation {
         name: "virial series to B10 + tail",
         // The estimated tail is 3e-4 of Z at 0.3, 1.2e-3 at 0.35.
         z: sphere_virial::resummed,
         holds_below: 0.35,
+        defined_below: f64::INFINITY,
     },
     Equation {
         name: "Carnahan-Starling",
         // 1.3e-3 below Hansen-Goos at 0.2, 2.5e-3 at 0.3.
         z: carnahan_starling::z,
         holds_below: 0.2,
+        defined_below: f64::INFINITY,
     },
 ];
 
