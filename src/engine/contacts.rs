@@ -133,10 +133,21 @@ impl<const D: usize> Batch<D> {
     #[inline(always)]
     pub fn earliest(&mut self, now: f64, best_t: &mut f64) -> Option<(usize, Image)> {
         self.all_contact_times();
-        let mut found = None;
+        // Which partners could win, without a branch per partner (whether one
+        // comes before its own event is as unpredictable as whether it
+        // approaches); `*best_t` only falls, so no other one can.
+        let mut hopeful = 0u32;
         for m in 0..self.len {
             let t = now + self.dt[m];
-            if t < *best_t && t < self.due[m] {
+            self.dt[m] = t;
+            hopeful |= u32::from(t < *best_t && t < self.due[m]) << m;
+        }
+        let mut found = None;
+        while hopeful != 0 {
+            let m = hopeful.trailing_zeros() as usize;
+            hopeful &= hopeful - 1;
+            let t = self.dt[m];
+            if t < *best_t {
                 let (b, c) = (self.b[m], self.c[m]);
                 if c > 0.0 && c >= -2.0 * b * (*best_t - now) {
                     continue;
