@@ -311,6 +311,8 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         }
         self.stamp[i] = self.stamp[i].wrapping_add(1);
         self.stamp[j] = self.stamp[j].wrapping_add(1);
+        // j's list and centre load while i is predicted.
+        self.neighbours.prefetch(j);
         self.predict(i);
         self.predict(j);
     }

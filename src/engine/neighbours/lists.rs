@@ -358,10 +358,11 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
         list.iter().map(|&e| unpack(e))
     }
 
-    /// List i's length and the two ends of its room (a hint).
+    /// List i's length, its centre and the two ends of its room (a hint).
     #[inline(always)]
     fn prefetch(&self, i: usize) {
         prefetch(&self.len[i]);
+        prefetch(&self.centre[i]);
         let room = self.entries.get(i * self.cap..(i + 1) * self.cap);
         if let Some((first, last)) = room.and_then(|r| r.first().zip(r.last())) {
             prefetch(first);
