@@ -46,23 +46,20 @@ impl<const D: usize> Batch<D> {
         }
     }
 
-    pub fn is_full(&self) -> bool {
-        self.len == BATCH
-    }
-
-    /// Add partner `partner` (index, image) at separation `r` (from the
-    /// particle to it) with relative velocity `v` (its velocity less the
-    /// particle's), whose own next event is due at `due`.
+    /// Make partner `partner` (index, image) the `m`th of the batch: at
+    /// separation `r` (from the particle to it) with relative velocity `v`
+    /// (its velocity less the particle's), whose own next event is due at
+    /// `due`.
     #[inline(always)]
-    pub fn push(
+    pub fn put(
         &mut self,
+        m: usize,
         partner: (usize, Image),
         r: &Vector<D>,
         v: &Vector<D>,
         sigma: f64,
         due: f64,
     ) {
-        let m = self.len;
         self.partner[m] = partner;
         for k in 0..D {
             self.r[k][m] = r[k];
@@ -70,7 +67,6 @@ impl<const D: usize> Batch<D> {
         }
         self.sigma[m] = sigma;
         self.due[m] = due;
-        self.len += 1;
     }
 
     /// Every partner's time to contact from now: 0 for an approaching pair
@@ -131,7 +127,8 @@ impl<const D: usize> Batch<D> {
     /// test is applied here to the rare winners.
     /// The batch is empty afterwards.
     #[inline(always)]
-    pub fn earliest(&mut self, now: f64, best_t: &mut f64) -> Option<(usize, Image)> {
+    pub fn earliest(&mut self, len: usize, now: f64, best_t: &mut f64) -> Option<(usize, Image)> {
+        self.len = len;
         self.all_contact_times();
         // Which partners could win, without a branch per partner (whether one
         // comes before its own event is as unpredictable as whether it

@@ -85,18 +85,14 @@ impl EventQueue {
     }
 
     /// Every particle's event time, by particle index.
-    pub fn times(&self) -> Vec<f64> {
-        self.time.clone()
+    pub fn times(&self) -> &[f64] {
+        &self.time
     }
 
     /// The particle with the earliest event, and its time.
     #[inline(always)]
     pub fn peek(&self) -> Option<(usize, f64)> {
         self.heap.first().map(|e| (e.particle as usize, e.time))
-    }
-
-    pub fn time_of(&self, i: usize) -> f64 {
-        self.time[i]
     }
 
     /// Replace particle i's event time.
@@ -385,10 +381,10 @@ mod tests {
     fn rebuilt_queues_keep_times_and_order() {
         let times = vec![2.0, 0.25, 7.0, 0.25, 1.0];
         let mut q = EventQueue::from_times(times.clone());
-        assert_eq!(q.times(), times);
+        assert_eq!(q.times(), &times[..]);
         q.rebase(0.25);
         assert_eq!(q.peek(), Some((1, 0.0)));
-        assert_eq!(q.time_of(2), 6.75);
+        assert_eq!(q.times()[2], 6.75);
     }
 
     /// Against a sorted reference: random reschedules (earlier, later, far
@@ -428,6 +424,6 @@ mod tests {
                 reference.iter_mut().for_each(|r| *r -= now);
             }
         }
-        assert_eq!(q.times(), reference);
+        assert_eq!(q.times(), &reference[..]);
     }
 }

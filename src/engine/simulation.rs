@@ -14,7 +14,7 @@ use rand_chacha::ChaCha8Rng;
 use super::boundary::{SimBox, Wall, wall_time};
 use super::build::{BuildError, check_overlaps, validate};
 use super::collide::{bounce, line_contact_time};
-use super::contacts::Batch;
+use super::contacts::{BATCH, Batch};
 use super::neighbours::{Image, Neighbourhood, PLANE, image_shift, no_shift, separation};
 use super::observer::{Observer, PairCollision, Snapshot, WallHit};
 use super::particle::Particle;
@@ -411,30 +411,32 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 }
             }
         } else {
+            // Everything the gather reads, as plain slices: their lengths and
+            // addresses stay in registers while the batch is written.
+            let (particles, shifts, due) = (&self.particles[..], &self.shifts[..], self.queue.times());
             let batch = &mut self.batch;
-            let mut candidates = self.neighbours.candidates(i).peekable();
-            while let Some((j, image)) = candidates.next() {
-                let q = &self.particles[j];
-                let r = separation(&x_i, &q.position_at(now), image, &self.shifts, N::PLANES);
-                let v = sub(&q.vel, &p.vel);
-                // A plane moves along axis 0 only, and only that part of the
-                // other's motion brings them together.
-                let v = if N::PLANES && image == PLANE {
-                    axis0(&v)
-                } else {
-                    v
-                };
-                batch.push(
-                    (j, image),
-                    &r,
-                    &v,
-                    p.radius + q.radius,
-                    self.queue.time_of(j),
-                );
-                if (batch.is_full() || candidates.peek().is_none())
-                    && let Some((j, image)) = batch.earliest(now, &mut best_t)
-                {
+            let mut candidates = self.neighbours.candidates(i);
+            loop {
+                let mut m = 0;
+                for (j, image) in candidates.by_ref().take(BATCH) {
+                    let q = &particles[j];
+                    let r = separation(&x_i, &q.position_at(now), image, shifts, N::PLANES);
+                    let v = sub(&q.vel, &p.vel);
+                    // A plane moves along axis 0 only, and only that part of the
+                    // other's motion brings them together.
+                    let v = if N::PLANES && image == PLANE {
+                        axis0(&v)
+                    } else {
+                        v
+                    };
+                    batch.put(m, (j, image), &r, &v, p.radius + q.radius, due[j]);
+                    m += 1;
+                }
+                if let Some((j, image)) = batch.earliest(m, now, &mut best_t) {
                     best = pair_with(j, image, &self.stamp);
+                }
+                if m < BATCH {
+                    break;
                 }
             }
         }
