@@ -413,7 +413,8 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         } else {
             // Everything the gather reads, as plain slices: their lengths and
             // addresses stay in registers while the batch is written.
-            let (particles, shifts, due) = (&self.particles[..], &self.shifts[..], self.queue.times());
+            let (particles, shifts, due) =
+                (&self.particles[..], &self.shifts[..], self.queue.times());
             let batch = &mut self.batch;
             let mut candidates = self.neighbours.candidates(i);
             loop {
