@@ -28,8 +28,13 @@ pub struct Grid<const D: usize> {
     periodic: [bool; D],
     /// Linear-index stride per axis.
     stride: [usize; D],
-    /// Each cell's points and where they are.
-    cells: Vec<Vec<(u32, Place<D>)>>,
+    /// Every cell has room for `room` points: cell c's points are
+    /// `points[c * room..][..count[c]]`. A cell's place is computed, not
+    /// read from a header, so a search can ask for all its cells' points at
+    /// once (see `cells_around`); the room grows when any cell fills.
+    room: usize,
+    count: Vec<u32>,
+    points: Vec<(u32, Place<D>)>,
     /// Each point's cell.
     cell: Vec<u32>,
     /// See [`Grid::rounding`].
@@ -63,12 +68,17 @@ impl<const D: usize> Grid<D> {
         for k in 1..D {
             stride[k] = stride[k - 1] * n[k - 1] as usize;
         }
+        let cells = stride[D - 1] * n[D - 1] as usize;
+        // Room for twice a cell's expected share to start with.
+        let room = (2 * points).div_ceil(cells.max(1)).max(1);
         Grid {
             n,
             width: std::array::from_fn(|k| sim_box.size[k] / n[k] as f64),
             periodic: std::array::from_fn(|k| sim_box.axes[k].is_periodic()),
             stride,
-            cells: Self::empty_cells(stride[D - 1] * n[D - 1] as usize, points),
+            room,
+            count: vec![0; cells],
+            points: vec![(0, [0.0; D]); cells * room],
             cell: vec![NONE; points],
             rounding: 2.0 * f32::EPSILON as f64 * norm2(&sim_box.size).sqrt(),
         }
@@ -82,17 +92,13 @@ impl<const D: usize> Grid<D> {
         self.rounding
     }
 
-    /// Empty cells with room for twice their expected share of the points,
-    /// allocated one after the other: neighbouring cells then sit close in
-    /// memory, which matters once the system outgrows the caches (few cells
-    /// ever outgrow their room and move).
-    fn empty_cells(cells: usize, points: usize) -> Vec<Vec<(u32, Place<D>)>> {
-        let room = (2 * points).div_ceil(cells.max(1)).max(1);
-        (0..cells).map(|_| Vec::with_capacity(room)).collect()
-    }
-
     fn coords(&self, x: &Vector<D>) -> [u32; D] {
         std::array::from_fn(|k| ((x[k] / self.width[k]).floor().max(0.0) as u32).min(self.n[k] - 1))
+    }
+
+    /// Cell c's points.
+    fn members(&self, c: usize) -> &Points<D> {
+        &self.points[c * self.room..][..self.count[c] as usize]
     }
 
     /// File point `i` at position `x`, which lies in the box (moving it if
@@ -102,19 +108,36 @@ impl<const D: usize> Grid<D> {
         let cell = (0..D)
             .map(|k| c[k] as usize * self.stride[k])
             .sum::<usize>();
-        let old = self.cell[i] as usize;
         let x = x.map(|x| x as f32);
         if self.cell[i] != NONE {
-            let members = &mut self.cells[old];
-            let at = members.iter().position(|m| m.0 == i as u32).expect("filed");
+            let old = self.cell[i] as usize;
+            let at = self.members(old).iter().position(|m| m.0 == i as u32);
+            let at = old * self.room + at.expect("filed");
             if old == cell {
-                members[at].1 = x;
+                self.points[at].1 = x;
                 return;
             }
-            members.swap_remove(at);
+            // Take it out: the cell's last point moves into its place.
+            self.count[old] -= 1;
+            self.points[at] = self.points[old * self.room + self.count[old] as usize];
         }
+        if self.count[cell] as usize == self.room {
+            self.grow();
+        }
+        self.points[cell * self.room + self.count[cell] as usize] = (i as u32, x);
+        self.count[cell] += 1;
         self.cell[i] = cell as u32;
-        self.cells[cell].push((i as u32, x));
+    }
+
+    /// Half as much room again in every cell.
+    fn grow(&mut self) {
+        let room = self.room + self.room.div_ceil(2);
+        let mut points = vec![(0, [0.0; D]); self.count.len() * room];
+        for c in 0..self.count.len() {
+            points[c * room..][..self.count[c] as usize].copy_from_slice(self.members(c));
+        }
+        self.points = points;
+        self.room = room;
     }
 
     /// The (up to) 3^D cells around position `x` (x itself may be filed
@@ -122,16 +145,16 @@ impl<const D: usize> Grid<D> {
     /// they are, and the image code they are seen through.
     pub fn cells_around(&self, x: &Vector<D>) -> ([(Image, &Points<D>); 27], usize) {
         let (near, count) = self.cells_near(x);
+        // Each cell's points lie elsewhere in memory, at a place known
+        // without reading anything: ask for all of them (and their counts)
+        // first, so that their cache misses overlap (see prefetch.rs).
+        for &(cell, _) in &near[..count] {
+            prefetch(&self.count[cell]);
+            prefetch(&self.points[cell * self.room]);
+        }
         let mut cells: [(Image, &Points<D>); 27] = [(0, &[]); 27];
         for (slot, &(cell, image)) in cells.iter_mut().zip(&near[..count]) {
-            let points = &self.cells[cell][..];
-            // Each cell's points lie elsewhere in memory: ask for all of them
-            // first, so that their cache misses overlap (see prefetch.rs).
-            if let (Some(first), Some(last)) = (points.first(), points.last()) {
-                prefetch(first);
-                prefetch(last);
-            }
-            *slot = (image, points);
+            *slot = (image, self.members(cell));
         }
         (cells, count)
     }
@@ -197,10 +220,44 @@ impl<const D: usize> Grid<D> {
         for c0 in first..=last {
             // Cells sharing an axis-0 index are n[0] apart in the linear order.
             for r in 0..rest {
-                for (j, x_j) in &self.cells[c0 as usize + r * self.n[0] as usize] {
+                for (j, x_j) in self.members(c0 as usize + r * self.n[0] as usize) {
                     f(*j as usize, x_j);
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every point piled into one cell, then all but one moved out again:
+    /// the room grows past the first guess, and every cell still holds
+    /// exactly the points filed there.
+    #[test]
+    fn a_cell_that_fills_makes_room_and_keeps_every_point() {
+        let sim_box = SimBox::periodic([9.0; 3]);
+        let mut grid = Grid::<3>::new(40, 3.0, &sim_box);
+        let first_room = grid.room;
+        for i in 0..40 {
+            grid.place(i, &[1.0 + 0.01 * i as f64, 1.0, 1.0]);
+        }
+        assert!(grid.room >= 40 && first_room < 40);
+        for i in 1..40 {
+            grid.place(i, &[7.0, 1.0 + 0.1 * i as f64, 4.0]);
+        }
+        let ids = |x: &Vector<3>| {
+            let (cells, count) = grid.cells_around(x);
+            let mut ids: Vec<u32> = cells[..count]
+                .iter()
+                .filter(|(image, _)| *image == 13)
+                .flat_map(|(_, points)| points.iter().map(|p| p.0))
+                .collect();
+            ids.sort();
+            ids
+        };
+        assert_eq!(ids(&[1.0, 1.0, 1.0]), vec![0]);
+        assert_eq!(ids(&[7.0, 4.0, 4.0]), (1..40).collect::<Vec<_>>());
     }
 }
