@@ -18,7 +18,6 @@ const LANES: usize = 4;
 /// partners, one array per coordinate, and their contact times once computed.
 #[derive(Debug, Clone)]
 pub struct Batch<const D: usize> {
-    len: usize,
     /// Each partner's index and image code.
     partner: [(usize, Image); BATCH],
     r: [[f64; BATCH]; D],
@@ -34,7 +33,6 @@ pub struct Batch<const D: usize> {
 impl<const D: usize> Batch<D> {
     pub fn new() -> Self {
         Batch {
-            len: 0,
             partner: [(0, 0); BATCH],
             r: [[0.0; BATCH]; D],
             v: [[0.0; BATCH]; D],
@@ -69,12 +67,12 @@ impl<const D: usize> Batch<D> {
         self.due[m] = due;
     }
 
-    /// Every partner's time to contact from now: 0 for an approaching pair
-    /// that round-off left overlapping, infinity for a pair that never meets.
-    /// Lanes go four at a time (one AVX register), up to the last filled.
+    /// The first `len` partners' times to contact from now: 0 for an
+    /// approaching pair that round-off left overlapping, infinity for a pair
+    /// that never meets. Lanes go four at a time (one AVX register).
     #[inline(always)]
-    fn contact_times(&mut self) {
-        for group in 0..self.len.div_ceil(LANES) {
+    fn contact_times(&mut self, len: usize) {
+        for group in 0..len.div_ceil(LANES) {
             for m in group * LANES..(group + 1) * LANES {
                 // The same operations in the same order as `contact_time_before`.
                 let (mut b, mut rr, mut vv) = (0.0, 0.0, 0.0);
@@ -99,21 +97,21 @@ impl<const D: usize> Batch<D> {
     /// fuses a multiply and an add on its own), so the same bits, 4 lanes wide.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx")]
-    fn contact_times_avx(&mut self) {
-        self.contact_times()
+    fn contact_times_avx(&mut self, len: usize) {
+        self.contact_times(len)
     }
 
-    fn all_contact_times(&mut self) {
+    fn all_contact_times(&mut self, len: usize) {
         #[cfg(target_arch = "x86_64")]
         if std::arch::is_x86_feature_detected!("avx") {
             // SAFETY: the CPU has just been found to support AVX.
-            unsafe { self.contact_times_avx() };
+            unsafe { self.contact_times_avx(len) };
             return;
         }
-        self.contact_times()
+        self.contact_times(len)
     }
 
-    /// The first partner (in the order pushed) whose contact comes before
+    /// Of the first `len` partners put, the first (in order) whose contact comes before
     /// `*best_t` and before the partner's own next event, lowering `*best_t`
     /// as it goes. A partner whose own event comes first is passed over: that
     /// event will change it (or re-predict it) and it will then look for this
@@ -125,16 +123,14 @@ impl<const D: usize> Batch<D> {
     /// without computing it (c >= 2|b| limit), which decides differently only
     /// when round-off puts the time within an ulp of the limit, so the same
     /// test is applied here to the rare winners.
-    /// The batch is empty afterwards.
     #[inline(always)]
     pub fn earliest(&mut self, len: usize, now: f64, best_t: &mut f64) -> Option<(usize, Image)> {
-        self.len = len;
-        self.all_contact_times();
+        self.all_contact_times(len);
         // Which partners could win, without a branch per partner (whether one
         // comes before its own event is as unpredictable as whether it
         // approaches); `*best_t` only falls, so no other one can.
         let mut hopeful = 0u32;
-        for m in 0..self.len {
+        for m in 0..len {
             let t = now + self.dt[m];
             self.dt[m] = t;
             hopeful |= u32::from(t < *best_t && t < self.due[m]) << m;
@@ -153,7 +149,6 @@ impl<const D: usize> Batch<D> {
                 found = Some(self.partner[m]);
             }
         }
-        self.len = 0;
         found
     }
 }

@@ -433,7 +433,9 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                     batch.put(m, (j, image), &r, &v, p.radius + q.radius, due[j]);
                     m += 1;
                 }
-                if let Some((j, image)) = batch.earliest(m, now, &mut best_t) {
+                if m > 0
+                    && let Some((j, image)) = batch.earliest(m, now, &mut best_t)
+                {
                     best = pair_with(j, image, &self.stamp);
                 }
                 if m < BATCH {
