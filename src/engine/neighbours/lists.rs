@@ -87,7 +87,8 @@ pub struct NeighbourList<const D: usize, const PLANES: bool = false> {
     plane_list: Vec<u32>,
     /// Room to work in while renewing, kept to spare an allocation each time.
     scratch: Vec<u32>,
-    scratch_old: Vec<u32>,
+    /// A renewal's changes to other lists: remove i from j's, or put `e` in.
+    changes: Vec<(usize, Option<u32>)>,
 }
 
 impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
@@ -140,6 +141,17 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         (self.centre[k][0] - self.centre[i][0]).abs() < self.plane_reach
     }
 
+    /// List i's length and the two ends of its room (a hint).
+    #[inline(always)]
+    fn prefetch_list(&self, i: usize) {
+        prefetch(&self.len[i]);
+        let room = self.entries.get(i * self.cap..(i + 1) * self.cap);
+        if let Some((first, last)) = room.and_then(|r| r.first().zip(r.last())) {
+            prefetch(first);
+            prefetch(last);
+        }
+    }
+
     /// Put `e` into list i, keeping it sorted.
     fn insert(&mut self, i: usize, e: u32) {
         if PLANES && Some(i) == self.plane {
@@ -150,10 +162,14 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         if self.len[i] as usize == self.cap {
             self.grow();
         }
+        // From the end, moving the larger entries up one: lists are short,
+        // so this beats a search and a call to memmove.
         let list = &mut self.entries[i * self.cap..(i + 1) * self.cap];
-        let n = self.len[i] as usize;
-        let at = list[..n].partition_point(|&x| x < e);
-        list.copy_within(at..n, at + 1);
+        let mut at = self.len[i] as usize;
+        while at > 0 && list[at - 1] > e {
+            list[at] = list[at - 1];
+            at -= 1;
+        }
         list[at] = e;
         self.len[i] += 1;
     }
@@ -169,8 +185,10 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         }
         let n = self.len[i] as usize;
         let list = &mut self.entries[i * self.cap..i * self.cap + n];
-        if let Ok(at) = list.binary_search_by_key(&j, key) {
-            list.copy_within(at + 1..n, at);
+        if let Some(at) = list.iter().position(|e| key(e) == j) {
+            for k in at..n - 1 {
+                list[k] = list[k + 1];
+            }
             self.len[i] -= 1;
         }
     }
@@ -232,32 +250,18 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
     /// list and the new (both sorted) touch other lists.
     fn relist(&mut self, i: usize) {
         let mut new = std::mem::take(&mut self.scratch);
-        let mut old = std::mem::take(&mut self.scratch_old);
+        let mut changes = std::mem::take(&mut self.changes);
         self.find(i, &mut new);
-        old.clear();
-        if PLANES && Some(i) == self.plane {
-            old.extend_from_slice(&self.plane_list);
-        } else {
-            old.extend_from_slice(self.list(i));
+        self.differences(i, &new, &mut changes);
+        // Every list the changes touch asked for at once, so that the misses
+        // on these scattered lists overlap; then the changes.
+        for &(j, _) in &changes {
+            self.prefetch_list(j);
         }
-        let (mut a, mut b) = (0, 0);
-        while a < old.len() || b < new.len() {
-            let key = |e: Option<&u32>| e.map_or(usize::MAX, |&e| unpack(e).0);
-            let (j_old, j_new) = (key(old.get(a)), key(new.get(b)));
-            if j_old < j_new {
-                self.remove(j_old, i);
-                a += 1;
-            } else if j_new < j_old {
-                self.insert(j_new, pack(i, mirror::<D>(unpack(new[b]).1)));
-                b += 1;
-            } else {
-                if old[a] != new[b] {
-                    // Same partner, new image (i wrapped round the box).
-                    self.remove(j_new, i);
-                    self.insert(j_new, pack(i, mirror::<D>(unpack(new[b]).1)));
-                }
-                a += 1;
-                b += 1;
+        for &(j, entry) in &changes {
+            match entry {
+                None => self.remove(j, i),
+                Some(e) => self.insert(j, e),
             }
         }
         if PLANES && Some(i) == self.plane {
@@ -271,7 +275,40 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
             self.len[i] = new.len() as u32;
         }
         self.scratch = new;
-        self.scratch_old = old;
+        self.changes = changes;
+    }
+
+    /// What renewing i's list to `new` does to other lists, by a merge of
+    /// the old list and the new: take i out of j's list (`None`), or put
+    /// this entry in.
+    fn differences(&self, i: usize, new: &[u32], changes: &mut Vec<(usize, Option<u32>)>) {
+        changes.clear();
+        let old = if PLANES && Some(i) == self.plane {
+            &self.plane_list[..]
+        } else {
+            self.list(i)
+        };
+        let entry = |e: u32| Some(pack(i, mirror::<D>(unpack(e).1)));
+        let (mut a, mut b) = (0, 0);
+        while a < old.len() || b < new.len() {
+            let key = |e: Option<&u32>| e.map_or(usize::MAX, |&e| unpack(e).0);
+            let (j_old, j_new) = (key(old.get(a)), key(new.get(b)));
+            if j_old < j_new {
+                changes.push((j_old, None));
+                a += 1;
+            } else if j_new < j_old {
+                changes.push((j_new, entry(new[b])));
+                b += 1;
+            } else {
+                if old[a] != new[b] {
+                    // Same partner, new image (i wrapped round the box).
+                    changes.push((j_new, None));
+                    changes.push((j_new, entry(new[b])));
+                }
+                a += 1;
+                b += 1;
+            }
+        }
     }
 
     /// Build every list from the centres.
@@ -342,7 +379,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
             plane,
             plane_list: Vec::new(),
             scratch: Vec::new(),
-            scratch_old: Vec::new(),
+            changes: Vec::new(),
         };
         lists.list_all();
         Ok(lists)
@@ -361,13 +398,8 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
     /// List i's length, its centre and the two ends of its room (a hint).
     #[inline(always)]
     fn prefetch(&self, i: usize) {
-        prefetch(&self.len[i]);
+        self.prefetch_list(i);
         prefetch(&self.centre[i]);
-        let room = self.entries.get(i * self.cap..(i + 1) * self.cap);
-        if let Some((first, last)) = room.and_then(|r| r.first().zip(r.last())) {
-            prefetch(first);
-            prefetch(last);
-        }
     }
 
     /// When p (particle i) reaches the edge of its neighbourhood.
