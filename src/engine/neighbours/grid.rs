@@ -141,10 +141,16 @@ impl<const D: usize> Grid<D> {
     }
 
     /// The (up to) 3^D cells around position `x` (x itself may be filed
-    /// there too), and how many there are: each one's points, with where
-    /// they are, and the image code they are seen through.
-    pub fn cells_around(&self, x: &Vector<D>) -> ([(Image, &Points<D>); 27], usize) {
-        let (near, count) = self.cells_near(x);
+    /// there too), into `cells`, and how many there are: each one's points,
+    /// with where they are, and the image code they are seen through.
+    /// (Written in place: returned, the array would be copied.)
+    pub fn cells_around<'a>(
+        &'a self,
+        x: &Vector<D>,
+        cells: &mut [(Image, &'a Points<D>); 27],
+    ) -> usize {
+        let mut near = [(0usize, 0 as Image); 27];
+        let count = self.cells_near(x, &mut near);
         // Each cell's points lie elsewhere in memory, at a place known
         // without reading anything: ask for all of them (and their counts)
         // first, so that their cache misses overlap (see prefetch.rs).
@@ -152,16 +158,16 @@ impl<const D: usize> Grid<D> {
             prefetch(&self.count[cell]);
             prefetch(&self.points[cell * self.room]);
         }
-        let mut cells: [(Image, &Points<D>); 27] = [(0, &[]); 27];
         for (slot, &(cell, image)) in cells.iter_mut().zip(&near[..count]) {
             *slot = (image, self.members(cell));
         }
-        (cells, count)
+        count
     }
 
-    /// The (up to) 3^D cells around position `x` (D <= 3): each one's linear
-    /// index and the image code of the points found there.
-    fn cells_near(&self, x: &Vector<D>) -> ([(usize, Image); 27], usize) {
+    /// The (up to) 3^D cells around position `x` (D <= 3), into `near`, and
+    /// how many: each one's linear index and the image code of the points
+    /// found there.
+    fn cells_near(&self, x: &Vector<D>, near: &mut [(usize, Image); 27]) -> usize {
         let c = self.coords(x);
         // Per axis, the (up to) three neighbouring rows: their part of the
         // linear cell index and of the image code.
@@ -185,7 +191,6 @@ impl<const D: usize> Grid<D> {
             place *= 3;
         }
         // Every combination of rows, odometer style.
-        let mut near = [(0usize, 0 as Image); 27];
         let mut found = 0;
         let mut at = [0usize; D];
         loop {
@@ -205,7 +210,7 @@ impl<const D: usize> Grid<D> {
                 at[k] = 0;
                 k += 1;
                 if k == D {
-                    return (near, found);
+                    return found;
                 }
             }
         }
@@ -248,7 +253,8 @@ mod tests {
             grid.place(i, &[7.0, 1.0 + 0.1 * i as f64, 4.0]);
         }
         let ids = |x: &Vector<3>| {
-            let (cells, count) = grid.cells_around(x);
+            let mut cells = [(0, &[][..]); 27];
+            let count = grid.cells_around(x, &mut cells);
             let mut ids: Vec<u32> = cells[..count]
                 .iter()
                 .filter(|(image, _)| *image == 13)

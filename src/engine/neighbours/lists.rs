@@ -242,7 +242,8 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
             // The grid's positions are rounded: widen the reach to match.
             let reach = self.reach + self.grid.rounding();
             let reach2 = reach * reach;
-            let (cells, count) = self.grid.cells_around(c);
+            let mut cells = [(0, &[][..]); 27];
+            let count = self.grid.cells_around(c, &mut cells);
             let cells = &cells[..count];
             unsorted.resize(cells.iter().map(|(_, points)| points.len()).sum(), 0);
             let mut kept = 0;
