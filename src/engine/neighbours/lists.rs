@@ -542,4 +542,25 @@ mod tests {
             assert!(listed(0, 1) && listed(1, 0), "{direction:?}, reach {reach}");
         }
     }
+
+    /// Short lists are sorted by counting, a plane's long one by comparison:
+    /// both give what a comparison sort gives.
+    #[test]
+    fn distinct_entries_come_out_in_order_short_or_long() {
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+        let mut sorted = Vec::new();
+        for len in [0, 1, 2, 13, 64, 65, 3000] {
+            let mut entries: Vec<u32> = Vec::new();
+            while entries.len() < len {
+                let e = rng.random::<u32>();
+                if !entries.contains(&e) {
+                    entries.push(e);
+                }
+            }
+            sort_distinct(&entries, &mut sorted);
+            entries.sort_unstable();
+            assert_eq!(sorted, entries, "{len} entries");
+        }
+    }
 }
