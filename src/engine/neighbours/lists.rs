@@ -60,13 +60,14 @@ fn unpack(e: u32) -> (usize, Image) {
 /// n^2 compares, but with no branch to mispredict they beat a comparison
 /// sort (one unpredictable branch per compare) at a few tens of entries.
 fn sort_distinct(from: &[u32], to: &mut Vec<u32>) {
-    to.clear();
     if from.len() > 64 {
         // A plane's list: thousands.
+        to.clear();
         to.extend_from_slice(from);
         to.sort_unstable();
         return;
     }
+    // Every place below `from.len()` is written: no need to clear first.
     to.resize(from.len(), 0);
     for &e in from {
         let place = from.iter().map(|&x| (x < e) as u32).sum::<u32>();
@@ -224,11 +225,11 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
     }
 
     /// Everything whose neighbourhood meets that of i at its current centre,
-    /// into `found`, sorted (`unsorted` is room to work in).
+    /// into `found`, sorted (`unsorted` is room to work in, only ever grown).
     fn find(&self, i: usize, found: &mut Vec<u32>, unsorted: &mut Vec<u32>) {
-        unsorted.clear();
         let c = &self.centre[i];
-        if PLANES && Some(i) == self.plane {
+        let kept = if PLANES && Some(i) == self.plane {
+            unsorted.clear();
             let reach = self.plane_reach + self.grid.rounding();
             self.grid
                 .for_each_in_slab(c[0] - reach, c[0] + reach, |j, c_j| {
@@ -236,6 +237,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
                         unsorted.push(pack(j, PLANE));
                     }
                 });
+            unsorted.len()
         } else {
             // Most points tested are not neighbours, at random: write every
             // one and keep it or not without a branch that would mispredict.
@@ -245,7 +247,11 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
             let mut cells = [(0, &[][..]); 27];
             let count = self.grid.cells_around(c, &mut cells);
             let cells = &cells[..count];
-            unsorted.resize(cells.iter().map(|(_, points)| points.len()).sum(), 0);
+            // Room for every point and the plane.
+            let room = cells.iter().map(|(_, points)| points.len()).sum::<usize>() + 1;
+            if unsorted.len() < room {
+                unsorted.resize(room, 0);
+            }
             let mut kept = 0;
             for &(image, points) in cells {
                 let s = &self.shifts[image as usize];
@@ -255,14 +261,15 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
                     kept += (j as usize != i && norm2(&r) < reach2) as usize;
                 }
             }
-            unsorted.truncate(kept);
             if let Some(k) = self.plane.filter(|_| PLANES)
                 && self.meets_plane(i, k)
             {
-                unsorted.push(pack(k, PLANE));
+                unsorted[kept] = pack(k, PLANE);
+                kept += 1;
             }
-        }
-        sort_distinct(unsorted, found);
+            kept
+        };
+        sort_distinct(&unsorted[..kept], found);
     }
 
     /// Renew i's list around its current centre, and its partners' lists.
