@@ -12,6 +12,8 @@
 //! event in it, and a later bucket means a later time. So the width is only
 //! a speed setting (retuned at each rebase) and runs reproduce bit for bit.
 
+use super::prefetch::prefetch;
+
 const PARKED: u32 = u32::MAX;
 /// A `slot` with this bit set means "in list `slot & !IN_LIST`".
 const IN_LIST: u32 = 1 << 31;
@@ -111,6 +113,11 @@ impl EventQueue {
                 self.sift_down(k as usize)
             }
             return;
+        }
+        // The bucket's list head is a scattered read: ask for it before
+        // taking i out of where it was, so that the two overlap.
+        if let Some(head) = self.heads.get(b as usize & self.mask) {
+            prefetch(head);
         }
         self.remove(i);
         self.file(i, t, b);
