@@ -18,8 +18,9 @@ const LANES: usize = 4;
 /// partners, one array per coordinate, and their contact times once computed.
 #[derive(Debug, Clone)]
 pub struct Batch<const D: usize> {
-    /// Each partner's index and image code.
-    partner: [(usize, Image); BATCH],
+    /// Each partner's index and image code (the index as 32 bits, half the
+    /// bytes to store per partner).
+    partner: [(u32, Image); BATCH],
     r: [[f64; BATCH]; D],
     v: [[f64; BATCH]; D],
     sigma: [f64; BATCH],
@@ -58,7 +59,7 @@ impl<const D: usize> Batch<D> {
         sigma: f64,
         due: f64,
     ) {
-        self.partner[m] = partner;
+        self.partner[m] = (partner.0 as u32, partner.1);
         for k in 0..D {
             self.r[k][m] = r[k];
             self.v[k][m] = v[k];
@@ -146,7 +147,8 @@ impl<const D: usize> Batch<D> {
                     continue;
                 }
                 *best_t = t;
-                found = Some(self.partner[m]);
+                let (j, image) = self.partner[m];
+                found = Some((j as usize, image));
             }
         }
         found
