@@ -140,17 +140,19 @@ impl<const D: usize> Grid<D> {
         self.room = room;
     }
 
-    /// The (up to) 3^D cells around position `x` (x itself may be filed
-    /// there too), into `cells`, and how many there are: each one's points,
-    /// with where they are, and the image code they are seen through.
-    /// (Written in place: returned, the array would be copied.)
+    /// The (up to) 3^D cells around position `x` that may hold a point within
+    /// `reach` of it (x itself may be filed there too), into `cells`, and how
+    /// many there are: each one's points, with where they are, and the image
+    /// code they are seen through. (Written in place: returned, the array
+    /// would be copied.)
     pub fn cells_around<'a>(
         &'a self,
         x: &Vector<D>,
+        reach: f64,
         cells: &mut [(Image, &'a Points<D>); 27],
     ) -> usize {
         let mut near = [(0usize, 0 as Image); 27];
-        let count = self.cells_near(x, &mut near);
+        let count = self.cells_near(x, reach, &mut near);
         // Each cell's points lie elsewhere in memory, at a place known
         // without reading anything: ask for all of them (and their counts)
         // first, so that their cache misses overlap (see prefetch.rs).
@@ -164,17 +166,25 @@ impl<const D: usize> Grid<D> {
         count
     }
 
-    /// The (up to) 3^D cells around position `x` (D <= 3), into `near`, and
-    /// how many: each one's linear index and the image code of the points
-    /// found there.
-    fn cells_near(&self, x: &Vector<D>, near: &mut [(usize, Image); 27]) -> usize {
+    /// The (up to) 3^D cells around position `x` (D <= 3) that may hold a
+    /// point within `reach` of it, into `near`, and how many: each one's
+    /// linear index and the image code of the points found there.
+    ///
+    /// A cell is left out when its nearest face, edge or corner is beyond
+    /// `reach` and twice the rounding (a corner cell, half the time, in 3D):
+    /// a point in it is then, rounded, more than `reach` and the rounding
+    /// away, so the caller's search, widened by the rounding, would not have
+    /// kept it.
+    fn cells_near(&self, x: &Vector<D>, reach: f64, near: &mut [(usize, Image); 27]) -> usize {
         let c = self.coords(x);
         // Per axis, the (up to) three neighbouring rows: their part of the
-        // linear cell index and of the image code.
-        let mut rows = [[(0usize, 0u8); 3]; D];
+        // linear cell index and of the image code, and how far x is from
+        // them along that axis.
+        let mut rows = [[(0usize, 0u8, 0.0f64); 3]; D];
         let mut count = [0usize; D];
         let mut place = 1u8;
         for k in 0..D {
+            let low = c[k] as f64 * self.width[k];
             for offset in [-1i64, 0, 1] {
                 let mut ck = c[k] as i64 + offset;
                 let mut digit = 1u8;
@@ -185,22 +195,32 @@ impl<const D: usize> Grid<D> {
                     digit = if ck < 0 { 0 } else { 2 };
                     ck = ck.rem_euclid(self.n[k] as i64);
                 }
-                rows[k][count[k]] = (ck as usize * self.stride[k], digit * place);
+                let gap = match offset {
+                    -1 => (x[k] - low).max(0.0),
+                    0 => 0.0,
+                    _ => (low + self.width[k] - x[k]).max(0.0),
+                };
+                rows[k][count[k]] = (ck as usize * self.stride[k], digit * place, gap);
                 count[k] += 1;
             }
             place *= 3;
         }
-        // Every combination of rows, odometer style.
+        let limit = reach + 2.0 * self.rounding;
+        let limit2 = limit * limit;
+        // Every combination of rows, odometer style; each is written, and
+        // kept or not without a branch.
         let mut found = 0;
         let mut at = [0usize; D];
         loop {
-            let (mut cell, mut image) = (0usize, 0 as Image);
+            let (mut cell, mut image, mut gap2) = (0usize, 0 as Image, 0.0);
             for k in 0..D {
-                cell += rows[k][at[k]].0;
-                image += rows[k][at[k]].1;
+                let (part, digit, gap) = rows[k][at[k]];
+                cell += part;
+                image += digit;
+                gap2 += gap * gap;
             }
             near[found] = (cell, image);
-            found += 1;
+            found += (gap2 < limit2) as usize;
             let mut k = 0;
             loop {
                 at[k] += 1;
@@ -254,7 +274,7 @@ mod tests {
         }
         let ids = |x: &Vector<3>| {
             let mut cells = [(0, &[][..]); 27];
-            let count = grid.cells_around(x, &mut cells);
+            let count = grid.cells_around(x, 3.0, &mut cells);
             let mut ids: Vec<u32> = cells[..count]
                 .iter()
                 .filter(|(image, _)| *image == 13)

@@ -245,7 +245,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
             let reach = self.reach + self.grid.rounding();
             let reach2 = reach * reach;
             let mut cells = [(0, &[][..]); 27];
-            let count = self.grid.cells_around(c, &mut cells);
+            let count = self.grid.cells_around(c, reach, &mut cells);
             let cells = &cells[..count];
             // Room for every point and the plane.
             let room = cells.iter().map(|(_, points)| points.len()).sum::<usize>() + 1;
