@@ -286,4 +286,61 @@ mod tests {
         assert_eq!(ids(&[1.0, 1.0, 1.0]), vec![0]);
         assert_eq!(ids(&[7.0, 4.0, 4.0]), (1..40).collect::<Vec<_>>());
     }
+
+    /// Whatever cells the search leaves out, every point within the reach
+    /// of the position asked about is in one it keeps, seen through the right
+    /// image: random points and positions, a periodic box and one with a
+    /// periodic axis between walls, in 2D and 3D.
+    fn no_point_in_reach_is_left_out<const D: usize>(sim_box: SimBox<D>, reach: f64) {
+        use crate::engine::neighbours::image_shift;
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(11);
+        let at = |rng: &mut rand_chacha::ChaCha8Rng| -> Vector<D> {
+            std::array::from_fn(|k| rng.random::<f64>() * sim_box.size[k])
+        };
+        let points: Vec<Vector<D>> = (0..3000).map(|_| at(&mut rng)).collect();
+        let mut grid = Grid::<D>::new(points.len(), reach, &sim_box);
+        for (i, x) in points.iter().enumerate() {
+            grid.place(i, x);
+        }
+        let mut kept_cells = 0;
+        for _ in 0..300 {
+            let x = at(&mut rng);
+            let mut cells = [(0, &[][..]); 27];
+            let count = grid.cells_around(&x, reach, &mut cells);
+            kept_cells += count;
+            let mut seen = vec![false; points.len()];
+            for &(image, members) in &cells[..count] {
+                let s = image_shift(image, &sim_box.size);
+                for &(j, _) in members {
+                    let r: Vector<D> = std::array::from_fn(|k| points[j as usize][k] + s[k] - x[k]);
+                    seen[j as usize] |= norm2(&r) < reach * reach;
+                }
+            }
+            for (j, p) in points.iter().enumerate() {
+                // The nearest image of j, by brute force.
+                let near = (0..3u32.pow(D as u32)).any(|image| {
+                    let axes_allow = (0..D).all(|k| {
+                        let digit = image / 3u32.pow(k as u32) % 3;
+                        digit == 1 || sim_box.axes[k].is_periodic()
+                    });
+                    let s = image_shift(image as Image, &sim_box.size);
+                    let r: Vector<D> = std::array::from_fn(|k| p[k] + s[k] - x[k]);
+                    axes_allow && norm2(&r) < reach * reach
+                });
+                assert_eq!(seen[j], near, "point {j} from {x:?}");
+            }
+        }
+        // The search did leave some cells out.
+        assert!(kept_cells < 300 * 3usize.pow(D as u32), "{kept_cells}");
+    }
+
+    #[test]
+    fn cells_left_out_hold_no_point_in_reach() {
+        no_point_in_reach_is_left_out(SimBox::<3>::periodic([10.0, 11.0, 12.5]), 2.4);
+        let mut walls = SimBox::<3>::hard([10.0, 11.0, 12.5]);
+        walls.axes[1] = crate::engine::boundary::Axis::Periodic;
+        no_point_in_reach_is_left_out(walls, 2.4);
+        no_point_in_reach_is_left_out(SimBox::<2>::periodic([30.0, 20.0]), 1.7);
+    }
 }
