@@ -258,7 +258,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
                 for &(j, c_j) in points {
                     let r: Vector<D> = std::array::from_fn(|k| c_j[k] as f64 + s[k] - c[k]);
                     unsorted[kept] = pack(j as usize, image);
-                    kept += (j as usize != i && norm2(&r) < reach2) as usize;
+                    kept += ((j as usize != i) & (norm2(&r) < reach2)) as usize;
                 }
             }
             if let Some(k) = self.plane.filter(|_| PLANES)
