@@ -23,6 +23,8 @@ const NONE: u32 = u32::MAX;
 const EVENTS_PER_BUCKET: f64 = 4.0;
 /// The ring covers about this many mean times-to-event.
 const HORIZON: f64 = 8.0;
+/// The bucket of every event too far ahead to count its buckets.
+const FAR_BUCKET: f64 = (1u64 << 62) as f64;
 
 #[derive(Debug, Clone, Copy)]
 struct Entry {
@@ -141,8 +143,14 @@ impl EventQueue {
 
     #[inline(always)]
     fn bucket(&self, t: f64) -> u64 {
-        // Saturates: far-future (and infinite) times land beyond the ring.
-        ((t - self.base) * self.inv_width) as u64
+        // Far-future (and infinite) times land beyond the ring, at 2^62.
+        // Clamped first, the conversion is one instruction; a saturating
+        // `as u64` takes a dozen. Not `clamp`: it would keep a NaN, which
+        // `max` takes to 0.
+        #[allow(clippy::manual_clamp)]
+        let b = ((t - self.base) * self.inv_width).max(0.0).min(FAR_BUCKET);
+        // SAFETY: b is a number in [0, 2^62], which an i64 holds.
+        unsafe { b.to_int_unchecked::<i64>() as u64 }
     }
 
     fn ring_len(&self) -> usize {
