@@ -129,14 +129,18 @@ impl<const D: usize> Grid<D> {
         self.cell[i] = cell as u32;
     }
 
-    /// Half as much room again in every cell.
+    /// Half as much room again in every cell, in place, last cell first
+    /// (each moves up): no second copy of the points at the peak.
     fn grow(&mut self) {
-        let room = self.room + self.room.div_ceil(2);
-        let mut points = vec![(0, [0.0; D]); self.count.len() * room];
-        for c in 0..self.count.len() {
-            points[c * room..][..self.count[c] as usize].copy_from_slice(self.members(c));
+        let (old, room) = (self.room, self.room + self.room.div_ceil(2));
+        // Exactly: a resize alone would round the room up to twice.
+        self.points
+            .reserve_exact(self.count.len() * room - self.points.len());
+        self.points.resize(self.count.len() * room, (0, [0.0; D]));
+        for c in (0..self.count.len()).rev() {
+            let n = self.count[c] as usize;
+            self.points.copy_within(c * old..c * old + n, c * room);
         }
-        self.points = points;
         self.room = room;
     }
 
@@ -257,34 +261,42 @@ impl<const D: usize> Grid<D> {
 mod tests {
     use super::*;
 
-    /// Every point piled into one cell, then all but one moved out again:
-    /// the room grows past the first guess, and every cell still holds
-    /// exactly the points filed there.
+    /// Two neighbouring cells filled to the first guess of room, then the
+    /// other points piled into one cell, then all but one of those moved
+    /// out again: the room grows past the first guess (moving the full
+    /// cells' points up over each other's old places), and every cell still
+    /// holds exactly the points filed there.
     #[test]
     fn a_cell_that_fills_makes_room_and_keeps_every_point() {
         let sim_box = SimBox::periodic([9.0; 3]);
-        let mut grid = Grid::<3>::new(40, 3.0, &sim_box);
+        let mut grid = Grid::<3>::new(48, 3.0, &sim_box);
         let first_room = grid.room;
+        assert_eq!(first_room, 4);
+        for i in 40..48 {
+            let x = if i < 44 { 4.0 } else { 7.0 };
+            grid.place(i, &[x, 1.0 + 0.1 * (i % 4) as f64, 1.0]);
+        }
         for i in 0..40 {
             grid.place(i, &[1.0 + 0.01 * i as f64, 1.0, 1.0]);
         }
-        assert!(grid.room >= 40 && first_room < 40);
+        assert!(grid.room >= 40);
         for i in 1..40 {
-            grid.place(i, &[7.0, 1.0 + 0.1 * i as f64, 4.0]);
+            grid.place(i, &[7.0, 3.0 + 0.05 * i as f64, 4.0]);
         }
+        // The points filed in the cell holding x.
         let ids = |x: &Vector<3>| {
-            let mut cells = [(0, &[][..]); 27];
-            let count = grid.cells_around(x, 3.0, &mut cells);
-            let mut ids: Vec<u32> = cells[..count]
-                .iter()
-                .filter(|(image, _)| *image == 13)
-                .flat_map(|(_, points)| points.iter().map(|p| p.0))
-                .collect();
+            let c = grid.coords(x);
+            let cell = (0..3).map(|k| c[k] as usize * grid.stride[k]).sum();
+            let mut ids: Vec<u32> = grid.members(cell).iter().map(|p| p.0).collect();
             ids.sort();
             ids
         };
         assert_eq!(ids(&[1.0, 1.0, 1.0]), vec![0]);
         assert_eq!(ids(&[7.0, 4.0, 4.0]), (1..40).collect::<Vec<_>>());
+        assert_eq!(ids(&[4.0, 1.0, 1.0]), (40..44).collect::<Vec<_>>());
+        assert_eq!(ids(&[7.0, 1.0, 1.0]), (44..48).collect::<Vec<_>>());
+        let filed: usize = (0..grid.count.len()).map(|c| grid.members(c).len()).sum();
+        assert_eq!(filed, 48);
     }
 
     /// Whatever cells the search leaves out, every point within the reach

@@ -213,14 +213,19 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         }
     }
 
+    /// Give every list half as much room again. In place, last list first
+    /// (each moves up): a large block grows without a second copy of it,
+    /// which would double the lists' memory at its peak.
     fn grow(&mut self) {
-        let cap = self.cap + self.cap / 2;
-        let mut entries = vec![0; self.len.len() * cap];
-        for i in 0..self.len.len() {
+        let (old, cap) = (self.cap, self.cap + self.cap / 2);
+        // Exactly: a resize alone would round the room up to twice.
+        self.entries
+            .reserve_exact(self.len.len() * cap - self.entries.len());
+        self.entries.resize(self.len.len() * cap, 0);
+        for i in (0..self.len.len()).rev() {
             let n = self.len[i] as usize;
-            entries[i * cap..i * cap + n].copy_from_slice(self.list(i));
+            self.entries.copy_within(i * old..i * old + n, i * cap);
         }
-        self.entries = entries;
         self.cap = cap;
     }
 
