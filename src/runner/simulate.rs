@@ -314,7 +314,7 @@ fn simulate<const D: usize>(
         let sim = dynamics(
             &d.run,
             factory,
-            Vec::new(),
+            Vec::new(), // the saved state has its own
             &built,
             set,
             engine_seed,
