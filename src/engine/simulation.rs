@@ -378,13 +378,6 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 }
             }
         }
-        if let Some(t) = self.neighbours.next_renewal(i, p) {
-            let t = t.max(now);
-            if t < best_t {
-                best_t = t;
-                best = Next::Renew;
-            }
-        }
         // Partners' records lie scattered in memory: ask for all of them
         // first, so that their cache misses overlap.
         if self.prefetch_partners {
@@ -441,6 +434,21 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 if m < BATCH {
                     break;
                 }
+            }
+        }
+        // The renewal, last: a particle still inside its neighbourhood when
+        // its best event falls due renews later, and its renewal time (a
+        // square root and a division) is not needed. It wins a tie with a
+        // collision, loses one with a wall.
+        let p = &self.particles[i];
+        let collision = matches!(best, Next::Pair { .. });
+        if !(best_t.is_finite() && self.neighbours.inside_at(i, p, best_t))
+            && let Some(t) = self.neighbours.next_renewal(i, p)
+        {
+            let t = t.max(now);
+            if t < best_t || (collision && t == best_t) {
+                best_t = t;
+                best = Next::Renew;
             }
         }
         self.next[i] = best;

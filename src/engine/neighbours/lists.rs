@@ -229,6 +229,26 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         self.cap = cap;
     }
 
+    /// Where p is from its centre, and how it moves, as its neighbourhood
+    /// sees it (a plane's along axis 0 only).
+    #[inline(always)]
+    fn relative_to_centre(&self, i: usize, p: &Particle<D>) -> (Vector<D>, Vector<D>) {
+        let (d, v) = (sub(&p.pos, &self.centre[i]), p.vel);
+        if PLANES && Some(i) == self.plane {
+            (axis0(&d), axis0(&v))
+        } else {
+            (d, v)
+        }
+    }
+
+    /// How far a particle may go from its centre before its list is renewed:
+    /// a hair inside the shell the lists were drawn with, so that round-off
+    /// in a renewal time can never carry a particle past the shell.
+    #[inline(always)]
+    fn edge(&self) -> f64 {
+        self.shell * (1.0 - 1e-9)
+    }
+
     /// Everything whose neighbourhood meets that of i at its current centre,
     /// into `found`, sorted (`unsorted` is room to work in, only ever grown).
     fn find(&self, i: usize, found: &mut Vec<u32>, unsorted: &mut Vec<u32>) {
@@ -437,15 +457,9 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
     /// When p (particle i) reaches the edge of its neighbourhood.
     #[inline]
     fn next_renewal(&self, i: usize, p: &Particle<D>) -> Option<f64> {
-        let mut d = sub(&p.pos, &self.centre[i]);
-        let mut v = p.vel;
-        if PLANES && Some(i) == self.plane {
-            (d, v) = (axis0(&d), axis0(&v));
-        }
+        let (d, v) = self.relative_to_centre(i, p);
         // Solve |d + v s| = edge for s > 0, d inside: cancellation-free roots.
-        // The edge sits a hair inside the shell the lists were drawn with, so
-        // round-off in this time can never carry a particle past it.
-        let edge = self.shell * (1.0 - 1e-9);
+        let edge = self.edge();
         let (a, b, c) = (dot(&v, &v), dot(&d, &v), dot(&d, &d) - edge * edge);
         if a == 0.0 {
             return None;
@@ -460,6 +474,16 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
             -c / (b + root)
         };
         Some(p.t + s)
+    }
+
+    /// Where p is at `t`, against the same edge: well inside it when the
+    /// answer is yes, since the edge is a hair inside the shell.
+    #[inline(always)]
+    fn inside_at(&self, i: usize, p: &Particle<D>, t: f64) -> bool {
+        let (d, v) = self.relative_to_centre(i, p);
+        let edge = self.edge();
+        let x: Vector<D> = std::array::from_fn(|k| d[k] + (t - p.t) * v[k]);
+        dot(&x, &x) < edge * edge
     }
 
     fn renew(&mut self, i: usize, p: &mut Particle<D>, now: f64) -> bool {
@@ -574,5 +598,51 @@ mod tests {
             entries.sort_unstable();
             assert_eq!(sorted, entries, "{len} entries");
         }
+    }
+
+    /// A particle found inside its neighbourhood at a time renews no
+    /// earlier than that time (what lets a prediction skip the renewal), and
+    /// one found outside renews no later: random places inside the shell,
+    /// velocities and times, a ball's neighbourhood and a plane's.
+    #[test]
+    fn inside_at_a_time_means_renewing_no_earlier() {
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
+        let sim_box = SimBox::<3>::periodic([12.0; 3]);
+        let ball = |x| Particle::new(x, [0.0; 3], 1.0, 0.5);
+        let mut particles = vec![ball([2.0; 3]), ball([8.0; 3])];
+        particles.push(Particle::plane(5.0, 0.0, 10.0, 0.5));
+        let lists = NeighbourList::<3, true>::build(&particles, &sim_box).unwrap();
+        let (mut inside, mut outside) = (0, 0);
+        for _ in 0..20_000 {
+            let i = rng.random_range(0..3);
+            let mut p = particles[i];
+            let d: Vector<3> = std::array::from_fn(|_| rng.random_range(-1.0..1.0));
+            let d = d.map(|x| x * lists.shell * 0.57);
+            p.pos = std::array::from_fn(|k| lists.centre[i][k] + d[k]);
+            p.vel = std::array::from_fn(|_| rng.random_range(-2.0..2.0));
+            p.t = rng.random_range(-1.0..1.0);
+            let t = p.t + rng.random_range(0.0..1.0) * lists.shell;
+            let renewal = lists.next_renewal(i, &p).unwrap();
+            // Round-off at the edge may put the two an ulp or so apart.
+            let ulps = 1e-12 * (1.0 + t.abs());
+            if lists.inside_at(i, &p, t) {
+                inside += 1;
+                assert!(
+                    renewal >= t - ulps,
+                    "{i}: inside at {t}, renews at {renewal}"
+                );
+            } else {
+                outside += 1;
+                assert!(
+                    renewal <= t + ulps,
+                    "{i}: outside at {t}, renews at {renewal}"
+                );
+            }
+        }
+        assert!(
+            inside > 1000 && outside > 1000,
+            "{inside} inside, {outside} outside"
+        );
     }
 }
