@@ -476,8 +476,9 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
         Some(p.t + s)
     }
 
-    /// Where p is at `t`, against the same edge: well inside it when the
-    /// answer is yes, since the edge is a hair inside the shell.
+    /// Whether p is within the edge at `t`: the edge `next_renewal` uses, a
+    /// hair inside the shell, so a yes that round-off got wrong at the edge
+    /// still leaves p inside the shell the lists were drawn with.
     #[inline(always)]
     fn inside_at(&self, i: usize, p: &Particle<D>, t: f64) -> bool {
         let (d, v) = self.relative_to_centre(i, p);
