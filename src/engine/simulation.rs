@@ -440,7 +440,6 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         // its best event falls due renews later, and its renewal time (a
         // square root and a division) is not needed. It wins a tie with a
         // collision, loses one with a wall.
-        let p = &self.particles[i];
         let collision = matches!(best, Next::Pair { .. });
         if !(best_t.is_finite() && self.neighbours.inside_at(i, p, best_t))
             && let Some(t) = self.neighbours.next_renewal(i, p)

@@ -8,7 +8,7 @@
 //! only has to find a superset of the points within its reach, so it widens
 //! the reach by `rounding` and the rounding can never hide a point.
 
-use super::Image;
+use super::{Image, widen_rooms};
 use crate::engine::boundary::SimBox;
 use crate::engine::prefetch::prefetch;
 use crate::engine::vector::{Vector, norm2};
@@ -129,18 +129,15 @@ impl<const D: usize> Grid<D> {
         self.cell[i] = cell as u32;
     }
 
-    /// Half as much room again in every cell, in place, last cell first
-    /// (each moves up): no second copy of the points at the peak.
+    /// Half as much room again in every cell.
     fn grow(&mut self) {
-        let (old, room) = (self.room, self.room + self.room.div_ceil(2));
-        // Exactly: a resize alone would round the room up to twice.
-        self.points
-            .reserve_exact(self.count.len() * room - self.points.len());
-        self.points.resize(self.count.len() * room, (0, [0.0; D]));
-        for c in (0..self.count.len()).rev() {
-            let n = self.count[c] as usize;
-            self.points.copy_within(c * old..c * old + n, c * room);
-        }
+        let room = self.room + self.room.div_ceil(2);
+        widen_rooms(
+            &mut self.points,
+            &self.count,
+            (self.room, room),
+            (0, [0.0; D]),
+        );
         self.room = room;
     }
 

@@ -21,11 +21,11 @@
 //! compiled into the event loop.
 
 use super::grid::Grid;
-use super::{Image, Neighbourhood, PLANE, Persist, image_shift};
+use super::{Image, Neighbourhood, PLANE, Persist, image_shift, widen_rooms};
 use crate::engine::boundary::SimBox;
 use crate::engine::particle::Particle;
 use crate::engine::prefetch::prefetch;
-use crate::engine::vector::{Vector, axis0, dot, norm2, sub};
+use crate::engine::vector::{Vector, add_scaled, axis0, dot, norm2, sub};
 
 /// A list entry packs a particle index and an image code: `j << 5 | image`.
 const IMAGE_BITS: u32 = 5;
@@ -213,19 +213,10 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         }
     }
 
-    /// Give every list half as much room again. In place, last list first
-    /// (each moves up): a large block grows without a second copy of it,
-    /// which would double the lists' memory at its peak.
+    /// Give every list half as much room again.
     fn grow(&mut self) {
-        let (old, cap) = (self.cap, self.cap + self.cap / 2);
-        // Exactly: a resize alone would round the room up to twice.
-        self.entries
-            .reserve_exact(self.len.len() * cap - self.entries.len());
-        self.entries.resize(self.len.len() * cap, 0);
-        for i in (0..self.len.len()).rev() {
-            let n = self.len[i] as usize;
-            self.entries.copy_within(i * old..i * old + n, i * cap);
-        }
+        let cap = self.cap + self.cap / 2;
+        widen_rooms(&mut self.entries, &self.len, (self.cap, cap), 0);
         self.cap = cap;
     }
 
@@ -483,7 +474,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
     fn inside_at(&self, i: usize, p: &Particle<D>, t: f64) -> bool {
         let (d, v) = self.relative_to_centre(i, p);
         let edge = self.edge();
-        let x: Vector<D> = std::array::from_fn(|k| d[k] + (t - p.t) * v[k]);
+        let x = add_scaled(&d, t - p.t, &v);
         dot(&x, &x) < edge * edge
     }
 
