@@ -21,7 +21,8 @@
 //! compiled into the event loop.
 
 use super::grid::Grid;
-use super::{Image, Neighbourhood, PLANE, Persist, image_shift, widen_rooms};
+use super::store::ListStore;
+use super::{Image, Neighbourhood, PLANE, Persist, image_shift};
 use crate::engine::boundary::SimBox;
 use crate::engine::particle::Particle;
 use crate::engine::prefetch::prefetch;
@@ -40,6 +41,23 @@ fn shell_per_free_path<const D: usize>(density: f64, sigma: f64) -> f64 {
     }
     let packing = std::f64::consts::PI / 6.0 * density * sigma.powi(3);
     1.0 + 0.2 * ((packing - 0.35) / 0.10).clamp(0.0, 1.0)
+}
+
+/// Room in line for a list of `n` particles spread evenly over the box,
+/// `reach` apart at most: an ideal gas's mean length and half its standard
+/// deviation (a fluid's lists are shorter and spread less), so that a few
+/// lists in a hundred spill (see `store.rs`).
+fn room_for_lists<const D: usize>(n: usize, reach: f64, sim_box: &SimBox<D>) -> usize {
+    let ball = match D {
+        2 => std::f64::consts::PI * reach * reach,
+        _ => 4.0 / 3.0 * std::f64::consts::PI * reach.powi(3),
+    };
+    let mean = n as f64 / sim_box.volume() * ball;
+    if mean.is_finite() {
+        (mean + 0.5 * mean.sqrt()).ceil().clamp(4.0, 1024.0) as usize
+    } else {
+        4
+    }
 }
 
 #[inline(always)]
@@ -98,10 +116,8 @@ pub struct NeighbourList<const D: usize, const PLANES: bool = false> {
     centre: Vec<Vector<D>>,
     /// The centres of every particle but the plane.
     grid: Grid<D>,
-    /// List i is `entries[i * cap..][..len[i]]`; `cap` grows when a list fills.
-    cap: usize,
-    len: Vec<u32>,
-    entries: Vec<u32>,
+    /// Every ball's list.
+    lists: ListStore,
     /// The plane's index (with `PLANES`), and its list, sorted.
     plane: Option<usize>,
     plane_list: Vec<u32>,
@@ -153,23 +169,12 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
     }
 
     fn list(&self, i: usize) -> &[u32] {
-        &self.entries[i * self.cap..i * self.cap + self.len[i] as usize]
+        self.lists.get(i)
     }
 
     /// Does the neighbourhood of ball i meet the slab of the plane k?
     fn meets_plane(&self, i: usize, k: usize) -> bool {
         (self.centre[k][0] - self.centre[i][0]).abs() < self.plane_reach
-    }
-
-    /// List i's length and the two ends of its room (a hint).
-    #[inline(always)]
-    fn prefetch_list(&self, i: usize) {
-        prefetch(&self.len[i]);
-        let room = self.entries.get(i * self.cap..(i + 1) * self.cap);
-        if let Some((first, last)) = room.and_then(|r| r.first().zip(r.last())) {
-            prefetch(first);
-            prefetch(last);
-        }
     }
 
     /// Put `e` into list i, keeping it sorted.
@@ -179,19 +184,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
             self.plane_list.insert(at, e);
             return;
         }
-        if self.len[i] as usize == self.cap {
-            self.grow();
-        }
-        // From the end, moving the larger entries up one: lists are short,
-        // so this beats a search and a call to memmove.
-        let list = &mut self.entries[i * self.cap..(i + 1) * self.cap];
-        let mut at = self.len[i] as usize;
-        while at > 0 && list[at - 1] > e {
-            list[at] = list[at - 1];
-            at -= 1;
-        }
-        list[at] = e;
-        self.len[i] += 1;
+        self.lists.insert(i, e);
     }
 
     /// Take particle j out of list i.
@@ -203,21 +196,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
             }
             return;
         }
-        let n = self.len[i] as usize;
-        let list = &mut self.entries[i * self.cap..i * self.cap + n];
-        if let Some(at) = list.iter().position(|e| key(e) == j) {
-            for k in at..n - 1 {
-                list[k] = list[k + 1];
-            }
-            self.len[i] -= 1;
-        }
-    }
-
-    /// Give every list half as much room again.
-    fn grow(&mut self) {
-        let cap = self.cap + self.cap / 2;
-        widen_rooms(&mut self.entries, &self.len, (self.cap, cap), 0);
-        self.cap = cap;
+        self.lists.remove(i, |e| key(&e) == j);
     }
 
     /// Where p is from its centre, and how it moves, as its neighbourhood
@@ -299,7 +278,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         // Every list the changes touch asked for at once, so that the misses
         // on these scattered lists overlap; then the changes.
         for &(j, _) in &changes {
-            self.prefetch_list(j);
+            self.lists.prefetch(j);
         }
         for &(j, entry) in &changes {
             match entry {
@@ -311,11 +290,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
             self.plane_list.clear();
             self.plane_list.extend_from_slice(&new);
         } else {
-            while new.len() > self.cap {
-                self.grow();
-            }
-            self.entries[i * self.cap..i * self.cap + new.len()].copy_from_slice(&new);
-            self.len[i] = new.len() as u32;
+            self.lists.set(i, &new);
         }
         self.scratch = [new, unsorted];
         self.changes = changes;
@@ -356,7 +331,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
 
     /// Build every list from the centres.
     fn list_all(&mut self) {
-        self.len.fill(0);
+        self.lists.clear();
         self.plane_list.clear();
         for i in 0..self.centre.len() {
             if Some(i) != self.plane {
@@ -405,6 +380,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
             .map(|p| p.radius)
             .fold(0.0, f64::max);
         let n = particles.len();
+        let reach = 2.0 * (largest_radius + shell);
         let mut lists = NeighbourList {
             shell,
             size: sim_box.size,
@@ -412,13 +388,11 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
             shifts: (0..3u32.pow(D as u32))
                 .map(|c| image_shift(c as Image, &sim_box.size))
                 .collect(),
-            reach: 2.0 * (largest_radius + shell),
+            reach,
             plane_reach: plane.map_or(0.0, |k| particles[k].radius) + largest_radius + 2.0 * shell,
             centre: particles.iter().map(|p| p.pos).collect(),
-            grid: Grid::new(n, 2.0 * (largest_radius + shell), sim_box),
-            cap: 8,
-            len: vec![0; n],
-            entries: vec![0; n * 8],
+            grid: Grid::new(n, reach, sim_box),
+            lists: ListStore::new(n, room_for_lists::<D>(n, reach, sim_box)),
             plane,
             plane_list: Vec::new(),
             scratch: Default::default(),
@@ -441,7 +415,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
     /// List i's length, its centre and the two ends of its room (a hint).
     #[inline(always)]
     fn prefetch(&self, i: usize) {
-        self.prefetch_list(i);
+        self.lists.prefetch(i);
         prefetch(&self.centre[i]);
     }
 

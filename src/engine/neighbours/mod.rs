@@ -5,6 +5,7 @@
 mod chain;
 mod grid;
 mod lists;
+mod store;
 
 pub use chain::Chain;
 pub use lists::NeighbourList;
@@ -57,22 +58,23 @@ pub fn separation<const D: usize>(
     }
 }
 
-/// Give each slot of `items` (slot k holds `counts[k]` items, in room for
-/// `old`) room for `new` items, in place: last slot first, each moving up,
+/// Give each of the `rooms` slots of `items` (slot k holds `used(k)` items,
+/// in room for `old`) room for `new` items, in place: last slot first, each moving up,
 /// so a large block grows without a second copy of it at the peak, and to
 /// exactly that room (a resize alone would round the capacity up to twice);
 /// new places hold `blank`. For the lists' entries and the grid's points.
 pub(super) fn widen_rooms<T: Copy>(
     items: &mut Vec<T>,
-    counts: &[u32],
+    rooms: usize,
+    used: impl Fn(usize) -> usize,
     (old, new): (usize, usize),
     blank: T,
 ) {
-    let len = counts.len() * new;
+    let len = rooms * new;
     items.reserve_exact(len - items.len());
     items.resize(len, blank);
-    for (k, &n) in counts.iter().enumerate().rev() {
-        items.copy_within(k * old..k * old + n as usize, k * new);
+    for k in (0..rooms).rev() {
+        items.copy_within(k * old..k * old + used(k), k * new);
     }
 }
 
