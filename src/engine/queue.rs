@@ -22,7 +22,7 @@ const NONE: u32 = u32::MAX;
 /// walk, few enough that the heap stays a few levels deep.
 const EVENTS_PER_BUCKET: f64 = 4.0;
 /// The ring covers about this many mean times-to-event.
-const HORIZON: f64 = 8.0;
+const HORIZON: f64 = 4.0;
 /// The bucket of every event too far ahead to count its buckets.
 const FAR_BUCKET: f64 = (1u64 << 62) as f64;
 

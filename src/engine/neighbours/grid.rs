@@ -8,9 +8,9 @@
 //! only has to find a superset of the points within its reach, so it widens
 //! the reach by `rounding` and the rounding can never hide a point.
 
-use super::{Image, widen_rooms};
+use super::Image;
+use super::store::{ListStore, room_for};
 use crate::engine::boundary::SimBox;
-use crate::engine::prefetch::prefetch;
 use crate::engine::vector::{Vector, norm2};
 
 const NONE: u32 = u32::MAX;
@@ -28,13 +28,11 @@ pub struct Grid<const D: usize> {
     periodic: [bool; D],
     /// Linear-index stride per axis.
     stride: [usize; D],
-    /// Every cell has room for `room` points: cell c's points are
-    /// `points[c * room..][..count[c]]`. A cell's place is computed, not
-    /// read from a header, so a search can ask for all its cells' points at
-    /// once (see `cells_around`); the room grows when any cell fills.
-    room: usize,
-    count: Vec<u32>,
-    points: Vec<(u32, Place<D>)>,
+    /// Each cell's points, with room in line for a little more than a
+    /// cell's share (a fuller cell spills, see `store.rs`). A cell's place
+    /// is computed, not read from a header, so a search can ask for all its
+    /// cells' points at once (see `cells_around`).
+    cells: ListStore<(u32, Place<D>)>,
     /// Each point's cell.
     cell: Vec<u32>,
     /// See [`Grid::rounding`].
@@ -69,16 +67,12 @@ impl<const D: usize> Grid<D> {
             stride[k] = stride[k - 1] * n[k - 1] as usize;
         }
         let cells = stride[D - 1] * n[D - 1] as usize;
-        // Room for twice a cell's expected share to start with.
-        let room = (2 * points).div_ceil(cells.max(1)).max(1);
         Grid {
             n,
             width: std::array::from_fn(|k| sim_box.size[k] / n[k] as f64),
             periodic: std::array::from_fn(|k| sim_box.axes[k].is_periodic()),
             stride,
-            room,
-            count: vec![0; cells],
-            points: vec![(0, [0.0; D]); cells * room],
+            cells: ListStore::new(cells, room_for(points as f64 / cells as f64)),
             cell: vec![NONE; points],
             rounding: 2.0 * f32::EPSILON as f64 * norm2(&sim_box.size).sqrt(),
         }
@@ -98,7 +92,7 @@ impl<const D: usize> Grid<D> {
 
     /// Cell c's points.
     fn members(&self, c: usize) -> &Points<D> {
-        &self.points[c * self.room..][..self.count[c] as usize]
+        self.cells.get(c)
     }
 
     /// File point `i` at position `x`, which lies in the box (moving it if
@@ -111,37 +105,17 @@ impl<const D: usize> Grid<D> {
         let x = x.map(|x| x as f32);
         if self.cell[i] != NONE {
             let old = self.cell[i] as usize;
-            let at = self.members(old).iter().position(|m| m.0 == i as u32);
-            let at = old * self.room + at.expect("filed");
+            let members = self.cells.get_mut(old);
+            let at = members.iter().position(|m| m.0 == i as u32);
+            let at = at.expect("filed");
             if old == cell {
-                self.points[at].1 = x;
+                members[at].1 = x;
                 return;
             }
-            // Take it out: the cell's last point moves into its place.
-            self.count[old] -= 1;
-            self.points[at] = self.points[old * self.room + self.count[old] as usize];
+            self.cells.swap_remove(old, at);
         }
-        if self.count[cell] as usize == self.room {
-            self.grow();
-        }
-        self.points[cell * self.room + self.count[cell] as usize] = (i as u32, x);
-        self.count[cell] += 1;
+        self.cells.push(cell, (i as u32, x));
         self.cell[i] = cell as u32;
-    }
-
-    /// An eighth more room in every cell: the fullest cell sets every
-    /// cell's room, so steps this small keep it close to what is needed.
-    fn grow(&mut self) {
-        let room = self.room + self.room.div_ceil(8);
-        let count = &self.count;
-        widen_rooms(
-            &mut self.points,
-            count.len(),
-            |c| count[c] as usize,
-            (self.room, room),
-            (0, [0.0; D]),
-        );
-        self.room = room;
     }
 
     /// The (up to) 3^D cells around position `x` that may hold a point within
@@ -158,11 +132,11 @@ impl<const D: usize> Grid<D> {
         let mut near = [(0usize, 0 as Image); 27];
         let count = self.cells_near(x, reach, &mut near);
         // Each cell's points lie elsewhere in memory, at a place known
-        // without reading anything: ask for all of them (and their counts)
-        // first, so that their cache misses overlap (see prefetch.rs).
+        // without reading anything (but for the few cells that spilled):
+        // ask for all of them (and their counts) first, so that their cache
+        // misses overlap (see prefetch.rs).
         for &(cell, _) in &near[..count] {
-            prefetch(&self.count[cell]);
-            prefetch(&self.points[cell * self.room]);
+            self.cells.prefetch(cell);
         }
         for (slot, &(cell, image)) in cells.iter_mut().zip(&near[..count]) {
             *slot = (image, self.members(cell));
@@ -261,17 +235,14 @@ impl<const D: usize> Grid<D> {
 mod tests {
     use super::*;
 
-    /// Two neighbouring cells filled to the first guess of room, then the
+    /// Two neighbouring cells filled past their room in line, then the
     /// other points piled into one cell, then all but one of those moved
-    /// out again: the room grows past the first guess (moving the full
-    /// cells' points up over each other's old places), and every cell still
-    /// holds exactly the points filed there.
+    /// out again and into another: cells spill and come back, and every
+    /// cell still holds exactly the points filed there.
     #[test]
-    fn a_cell_that_fills_makes_room_and_keeps_every_point() {
+    fn a_cell_that_fills_spills_and_keeps_every_point() {
         let sim_box = SimBox::periodic([9.0; 3]);
         let mut grid = Grid::<3>::new(48, 3.0, &sim_box);
-        let first_room = grid.room;
-        assert_eq!(first_room, 4);
         for i in 40..48 {
             let x = if i < 44 { 4.0 } else { 7.0 };
             grid.place(i, &[x, 1.0 + 0.1 * (i % 4) as f64, 1.0]);
@@ -279,7 +250,6 @@ mod tests {
         for i in 0..40 {
             grid.place(i, &[1.0 + 0.01 * i as f64, 1.0, 1.0]);
         }
-        assert!(grid.room >= 40);
         for i in 1..40 {
             grid.place(i, &[7.0, 3.0 + 0.05 * i as f64, 4.0]);
         }
@@ -295,7 +265,8 @@ mod tests {
         assert_eq!(ids(&[7.0, 4.0, 4.0]), (1..40).collect::<Vec<_>>());
         assert_eq!(ids(&[4.0, 1.0, 1.0]), (40..44).collect::<Vec<_>>());
         assert_eq!(ids(&[7.0, 1.0, 1.0]), (44..48).collect::<Vec<_>>());
-        let filed: usize = (0..grid.count.len()).map(|c| grid.members(c).len()).sum();
+        let cells = grid.n.iter().map(|&k| k as usize).product::<usize>();
+        let filed: usize = (0..cells).map(|c| grid.members(c).len()).sum();
         assert_eq!(filed, 48);
     }
 

@@ -21,7 +21,7 @@
 //! compiled into the event loop.
 
 use super::grid::Grid;
-use super::store::ListStore;
+use super::store::{ListStore, room_for};
 use super::{Image, Neighbourhood, PLANE, Persist, image_shift};
 use crate::engine::boundary::SimBox;
 use crate::engine::particle::Particle;
@@ -43,21 +43,15 @@ fn shell_per_free_path<const D: usize>(density: f64, sigma: f64) -> f64 {
     1.0 + 0.2 * ((packing - 0.35) / 0.10).clamp(0.0, 1.0)
 }
 
-/// Room in line for a list of `n` particles spread evenly over the box,
-/// `reach` apart at most: an ideal gas's mean length and half its standard
-/// deviation (a fluid's lists are shorter and spread less), so that a few
-/// lists in a hundred spill (see `store.rs`).
-fn room_for_lists<const D: usize>(n: usize, reach: f64, sim_box: &SimBox<D>) -> usize {
+/// The mean length of a list of `n` particles spread evenly over the box
+/// (an ideal gas: a fluid's lists are a little shorter), `reach` apart at
+/// most.
+fn mean_list<const D: usize>(n: usize, reach: f64, sim_box: &SimBox<D>) -> f64 {
     let ball = match D {
         2 => std::f64::consts::PI * reach * reach,
         _ => 4.0 / 3.0 * std::f64::consts::PI * reach.powi(3),
     };
-    let mean = n as f64 / sim_box.volume() * ball;
-    if mean.is_finite() {
-        (mean + 0.5 * mean.sqrt()).ceil().clamp(4.0, 1024.0) as usize
-    } else {
-        4
-    }
+    n as f64 / sim_box.volume() * ball
 }
 
 #[inline(always)]
@@ -117,7 +111,7 @@ pub struct NeighbourList<const D: usize, const PLANES: bool = false> {
     /// The centres of every particle but the plane.
     grid: Grid<D>,
     /// Every ball's list.
-    lists: ListStore,
+    lists: ListStore<u32>,
     /// The plane's index (with `PLANES`), and its list, sorted.
     plane: Option<usize>,
     plane_list: Vec<u32>,
@@ -392,7 +386,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
             plane_reach: plane.map_or(0.0, |k| particles[k].radius) + largest_radius + 2.0 * shell,
             centre: particles.iter().map(|p| p.pos).collect(),
             grid: Grid::new(n, reach, sim_box),
-            lists: ListStore::new(n, room_for_lists::<D>(n, reach, sim_box)),
+            lists: ListStore::new(n, room_for(mean_list::<D>(n, reach, sim_box))),
             plane,
             plane_list: Vec::new(),
             scratch: Default::default(),

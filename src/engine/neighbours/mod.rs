@@ -58,26 +58,6 @@ pub fn separation<const D: usize>(
     }
 }
 
-/// Give each of the `rooms` slots of `items` (slot k holds `used(k)` items,
-/// in room for `old`) room for `new` items, in place: last slot first, each moving up,
-/// so a large block grows without a second copy of it at the peak, and to
-/// exactly that room (a resize alone would round the capacity up to twice);
-/// new places hold `blank`. For the lists' entries and the grid's points.
-pub(super) fn widen_rooms<T: Copy>(
-    items: &mut Vec<T>,
-    rooms: usize,
-    used: impl Fn(usize) -> usize,
-    (old, new): (usize, usize),
-    blank: T,
-) {
-    let len = rooms * new;
-    items.reserve_exact(len - items.len());
-    items.resize(len, blank);
-    for k in (0..rooms).rev() {
-        items.copy_within(k * old..k * old + used(k), k * new);
-    }
-}
-
 pub trait Neighbourhood<const D: usize>: Sized + Clone + Send {
     /// Whether a plane (a piston wall) can take part. A neighbourhood without
     /// planes compiles every plane branch of the event loop away.

@@ -1,40 +1,76 @@
-//! Where the neighbour lists' entries live. Most lists are near the mean
-//! length and a few are much longer (the longest of a million lists is
-//! nearly twice the mean), so room for the longest in every list would take
-//! half as much memory again as the entries. Instead each list has room in
-//! line for a little more than the mean, and a list that outgrows it moves,
-//! whole, to a slot of a spill store, where it stays until it is set anew;
-//! its slot's number takes the place of its first entry in line. A list is
-//! always one contiguous slice, wherever it lives.
+//! Many short lists side by side: the neighbour lists, and the cell grid's
+//! cells. Most lists are near the mean length and a few are much longer (the
+//! longest of a million neighbour lists is nearly twice the mean), so room
+//! for the longest in every list would take half as much memory again as
+//! the entries. Instead each list has room in line for a little more than
+//! the mean, and a list that outgrows it moves, whole, to a slot of a spill
+//! store, where it stays until it is set anew or is short again; its slot's
+//! number takes the place of its first entry in line. A list is always one
+//! contiguous slice, wherever it lives.
 
-use super::widen_rooms;
 use crate::engine::prefetch::prefetch;
 
 /// Marks a list's length when the list lives in the spill store.
 const SPILLED: u32 = 1 << 31;
 
+/// Room in line for lists of this mean length: the mean and half the
+/// standard deviation of counts that fall at random (Poisson), so that a
+/// few lists in a hundred spill.
+pub(super) fn room_for(mean: f64) -> usize {
+    if mean.is_finite() {
+        (mean + 0.5 * mean.sqrt()).ceil().clamp(1.0, 1024.0) as usize
+    } else {
+        1
+    }
+}
+
+/// What a list holds: anything that can stand in for a spill slot's number.
+pub(super) trait Entry: Copy {
+    fn from_slot(slot: u32) -> Self;
+    fn slot(self) -> u32;
+}
+
+impl Entry for u32 {
+    fn from_slot(slot: u32) -> Self {
+        slot
+    }
+    fn slot(self) -> u32 {
+        self
+    }
+}
+
+/// A grid point: its index, and where it is.
+impl<const D: usize> Entry for (u32, [f32; D]) {
+    fn from_slot(slot: u32) -> Self {
+        (slot, [0.0; D])
+    }
+    fn slot(self) -> u32 {
+        self.0
+    }
+}
+
 #[derive(Debug, Clone)]
-pub(super) struct ListStore {
+pub(super) struct ListStore<T> {
     /// List i in line is `inline[i * room..][..len]`.
     room: usize,
     /// Each list's length, with `SPILLED` set if it lives in the spill store.
     len: Vec<u32>,
-    inline: Vec<u32>,
+    inline: Vec<T>,
     /// Slot s is `spill[s * spill_room..]`; `free` holds the slots to reuse.
     spill_room: usize,
-    spill: Vec<u32>,
+    spill: Vec<T>,
     free: Vec<u32>,
 }
 
-impl ListStore {
+impl<T: Entry> ListStore<T> {
     /// `lists` empty lists, each with room for `room` entries in line.
     pub fn new(lists: usize, room: usize) -> Self {
         let room = room.max(1);
         ListStore {
             room,
             len: vec![0; lists],
-            inline: vec![0; lists * room],
-            spill_room: room + room / 2,
+            inline: vec![T::from_slot(0); lists * room],
+            spill_room: room + room.div_ceil(2),
             spill: Vec::new(),
             free: Vec::new(),
         }
@@ -51,7 +87,7 @@ impl ListStore {
     #[inline(always)]
     fn room_of(&self, i: usize, spilled: bool) -> (usize, usize) {
         if spilled {
-            let slot = self.inline[i * self.room] as usize;
+            let slot = self.inline[i * self.room].slot() as usize;
             (slot * self.spill_room, self.spill_room)
         } else {
             (i * self.room, self.room)
@@ -59,7 +95,7 @@ impl ListStore {
     }
 
     #[inline(always)]
-    pub fn get(&self, i: usize) -> &[u32] {
+    pub fn get(&self, i: usize) -> &[T] {
         let (spilled, n) = self.where_is(i);
         let (at, _) = self.room_of(i, spilled);
         if spilled {
@@ -69,8 +105,14 @@ impl ListStore {
         }
     }
 
+    /// List i.
+    pub fn get_mut(&mut self, i: usize) -> &mut [T] {
+        let (list, n) = self.room_mut(i);
+        &mut list[..n]
+    }
+
     /// List i's whole room and how much of it the list fills.
-    fn room_mut(&mut self, i: usize) -> (&mut [u32], usize) {
+    fn room_mut(&mut self, i: usize) -> (&mut [T], usize) {
         let (spilled, n) = self.where_is(i);
         let (at, room) = self.room_of(i, spilled);
         let store = if spilled {
@@ -81,46 +123,71 @@ impl ListStore {
         (&mut store[at..at + room], n)
     }
 
-    /// List i's length and where it starts in line (a hint).
+    /// List i's length and the two ends of its room in line (a hint: its
+    /// place is computed, not read, so many can be asked for at once).
     #[inline(always)]
     pub fn prefetch(&self, i: usize) {
         prefetch(&self.len[i]);
-        if let Some(first) = self.inline.get(i * self.room) {
+        let room = self.inline.get(i * self.room..(i + 1) * self.room);
+        if let Some((first, last)) = room.and_then(|r| r.first().zip(r.last())) {
             prefetch(first);
+            prefetch(last);
         }
     }
 
-    /// Put `e` into list i, keeping it sorted.
-    pub fn insert(&mut self, i: usize, e: u32) {
+    /// List i, with room for one more entry at its end.
+    fn with_room_for_one(&mut self, i: usize) -> (&mut [T], usize) {
         let (spilled, n) = self.where_is(i);
         if n == self.room_of(i, spilled).1 {
             self.make_room(i, spilled);
         }
-        // From the end, moving the larger entries up one: lists are short,
-        // so this beats a search and a call to memmove.
-        let (list, mut at) = self.room_mut(i);
-        while at > 0 && list[at - 1] > e {
-            list[at] = list[at - 1];
-            at -= 1;
-        }
-        list[at] = e;
+        self.room_mut(i)
+    }
+
+    /// Put `e` at the end of list i.
+    pub fn push(&mut self, i: usize, e: T) {
+        let (list, n) = self.with_room_for_one(i);
+        list[n] = e;
         self.len[i] += 1;
     }
 
-    /// Take the first entry `is` picks out of list i, if any.
-    pub fn remove(&mut self, i: usize, is: impl Fn(u32) -> bool) {
+    /// Take entry `at` out of list i, moving its last entry into its place.
+    pub fn swap_remove(&mut self, i: usize, at: usize) {
+        let (list, n) = self.room_mut(i);
+        list[at] = list[n - 1];
+        self.len[i] -= 1;
+        self.settle(i);
+    }
+
+    /// Take the first entry `is` picks out of list i, if any, keeping the
+    /// others in order.
+    pub fn remove(&mut self, i: usize, is: impl Fn(T) -> bool) {
         let (list, n) = self.room_mut(i);
         if let Some(at) = list[..n].iter().position(|&e| is(e)) {
             list.copy_within(at + 1..n, at);
             self.len[i] -= 1;
+            self.settle(i);
+        }
+    }
+
+    /// A spilled list that fits in line again, with one place to spare (so
+    /// that a list at the edge does not go back and forth), comes back.
+    fn settle(&mut self, i: usize) {
+        let (spilled, n) = self.where_is(i);
+        if spilled && n < self.room {
+            let (from, _) = self.room_of(i, true);
+            let at = i * self.room;
+            self.free.push(self.inline[at].slot());
+            self.inline[at..at + n].copy_from_slice(&self.spill[from..from + n]);
+            self.len[i] = n as u32;
         }
     }
 
     /// Make list i `entries`.
-    pub fn set(&mut self, i: usize, entries: &[u32]) {
+    pub fn set(&mut self, i: usize, entries: &[T]) {
         let (spilled, _) = self.where_is(i);
         if spilled {
-            self.free.push(self.inline[i * self.room]);
+            self.free.push(self.inline[i * self.room].slot());
         }
         self.len[i] = 0;
         if entries.len() > self.room {
@@ -142,9 +209,18 @@ impl ListStore {
     fn make_room(&mut self, i: usize, spilled: bool) {
         let (_, n) = self.where_is(i);
         if spilled {
-            let (old, room) = (self.spill_room, self.spill_room + self.spill_room / 2);
+            let (old, room) = (
+                self.spill_room,
+                self.spill_room + self.spill_room.div_ceil(2),
+            );
             let slots = self.spill.len() / old;
-            widen_rooms(&mut self.spill, slots, |_| old, (old, room), 0);
+            widen_rooms(
+                &mut self.spill,
+                slots,
+                |_| old,
+                (old, room),
+                T::from_slot(0),
+            );
             self.spill_room = room;
             return;
         }
@@ -173,7 +249,7 @@ impl ListStore {
                     l => l as usize,
                 },
                 (old, room),
-                0,
+                T::from_slot(0),
             );
             self.room = room;
             if need <= room {
@@ -184,11 +260,47 @@ impl ListStore {
             self.make_room(i, true);
         }
         let slot = self.free.pop().unwrap_or_else(|| {
-            self.spill.resize(self.spill.len() + self.spill_room, 0);
+            self.spill
+                .resize(self.spill.len() + self.spill_room, T::from_slot(0));
             slots as u32
         });
-        self.inline[i * self.room] = slot;
+        self.inline[i * self.room] = T::from_slot(slot);
         self.len[i] = SPILLED;
+    }
+}
+
+impl ListStore<u32> {
+    /// Put `e` into list i, keeping it sorted.
+    pub fn insert(&mut self, i: usize, e: u32) {
+        // From the end, moving the larger entries up one: lists are short,
+        // so this beats a search and a call to memmove.
+        let (list, mut at) = self.with_room_for_one(i);
+        while at > 0 && list[at - 1] > e {
+            list[at] = list[at - 1];
+            at -= 1;
+        }
+        list[at] = e;
+        self.len[i] += 1;
+    }
+}
+
+/// Give each of the `rooms` slots of `items` (slot k holds `used(k)` items,
+/// in room for `old`) room for `new` items, in place: last slot first, each
+/// moving up, so a large block grows without a second copy of it at the
+/// peak, and to exactly that room (a resize alone would round the capacity
+/// up to twice); new places hold `blank`.
+fn widen_rooms<T: Copy>(
+    items: &mut Vec<T>,
+    rooms: usize,
+    used: impl Fn(usize) -> usize,
+    (old, new): (usize, usize),
+    blank: T,
+) {
+    let len = rooms * new;
+    items.reserve_exact(len - items.len());
+    items.resize(len, blank);
+    for k in (0..rooms).rev() {
+        items.copy_within(k * old..k * old + used(k), k * new);
     }
 }
 
@@ -197,6 +309,16 @@ mod tests {
     use super::*;
     use rand::{RngExt, SeedableRng};
     use rand_chacha::ChaCha8Rng;
+
+    fn reads_back<T: Entry + PartialEq + std::fmt::Debug>(
+        store: &ListStore<T>,
+        truth: &[Vec<T>],
+        step: u32,
+    ) {
+        for (k, t) in truth.iter().enumerate() {
+            assert_eq!(store.get(k), &t[..], "list {k} at step {step}");
+        }
+    }
 
     /// Random inserts, removals and settings against plain sorted vectors,
     /// with room in line for a few entries so that lists spill, come back,
@@ -209,7 +331,7 @@ mod tests {
         let mut store = ListStore::new(lists, 3);
         let mut truth = vec![Vec::<u32>::new(); lists];
         let (mut spilled_seen, first) = (0, (store.room, store.spill_room));
-        for step in 0..40_000 {
+        for step in 0..40_000u32 {
             let i = rng.random_range(0..lists);
             match rng.random_range(0..10) {
                 0..=4 => {
@@ -239,18 +361,56 @@ mod tests {
             }
             spilled_seen += (store.len[i] & SPILLED != 0) as usize;
             if step % 997 == 0 {
-                for (k, t) in truth.iter().enumerate() {
-                    assert_eq!(store.get(k), &t[..], "list {k} at step {step}");
-                }
+                reads_back(&store, &truth, step);
             }
         }
-        for (k, t) in truth.iter().enumerate() {
-            assert_eq!(store.get(k), &t[..], "list {k}");
-        }
+        reads_back(&store, &truth, 40_000);
         assert!(spilled_seen > 1000, "lists spilled {spilled_seen} times");
         assert!(store.room > first.0, "the rooms in line widened");
         assert!(store.spill_room > first.1, "the spill slots widened");
         store.clear();
         assert!((0..lists).all(|k| store.get(k).is_empty()));
+    }
+
+    /// Points filed into cells and moved between them as the grid does
+    /// (appended, taken out by moving the last into their place, changed in
+    /// place), against plain vectors doing the same: every cell reads back
+    /// exactly, and the spilled cells that empty come back in line.
+    #[test]
+    fn cells_read_back_exactly_in_line_or_spilled() {
+        let mut rng = ChaCha8Rng::seed_from_u64(29);
+        let (cells, points) = (32, 120);
+        let mut store = ListStore::<(u32, [f32; 2])>::new(cells, 1);
+        let mut truth = vec![Vec::<(u32, [f32; 2])>::new(); cells];
+        let mut home = vec![None::<usize>; points];
+        let mut spilled_seen = 0;
+        for step in 0..40_000u32 {
+            let p = rng.random_range(0..points);
+            // Crowd the first cells now and then, so that some spill.
+            let c = rng.random_range(0..if step % 5000 < 500 { 3 } else { cells });
+            let x = [step as f32, p as f32];
+            if let Some(old) = home[p] {
+                let at = truth[old].iter().position(|e| e.0 == p as u32).unwrap();
+                if old == c {
+                    store.get_mut(c)[at].1 = x;
+                    truth[c][at].1 = x;
+                    continue;
+                }
+                store.swap_remove(old, at);
+                truth[old].swap_remove(at);
+            }
+            store.push(c, (p as u32, x));
+            truth[c].push((p as u32, x));
+            home[p] = Some(c);
+            spilled_seen += (store.len[c] & SPILLED != 0) as usize;
+            if step % 991 == 0 {
+                reads_back(&store, &truth, step);
+            }
+        }
+        reads_back(&store, &truth, 40_000);
+        assert!(spilled_seen > 100, "cells spilled {spilled_seen} times");
+        let in_use = store.spill.len() / store.spill_room - store.free.len();
+        let spilled = store.len.iter().filter(|&&l| l & SPILLED != 0).count();
+        assert_eq!(in_use, spilled, "every slot not in use is free");
     }
 }
