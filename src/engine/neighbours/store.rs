@@ -164,7 +164,10 @@ impl<T: Entry> ListStore<T> {
     pub fn remove(&mut self, i: usize, is: impl Fn(T) -> bool) {
         let (list, n) = self.room_mut(i);
         if let Some(at) = list[..n].iter().position(|&e| is(e)) {
-            list.copy_within(at + 1..n, at);
+            // One by one: lists are short, so this beats a call to memmove.
+            for k in at..n - 1 {
+                list[k] = list[k + 1];
+            }
             self.len[i] -= 1;
             self.settle(i);
         }
