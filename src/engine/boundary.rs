@@ -2,6 +2,15 @@
 
 use super::vector::Vector;
 
+/// Volume of a d-ball of radius r (a rod's length in 1D).
+pub fn ball_volume(d: usize, r: f64) -> f64 {
+    match d {
+        1 => 2.0 * r,
+        2 => std::f64::consts::PI * r * r,
+        _ => 4.0 / 3.0 * std::f64::consts::PI * r * r * r,
+    }
+}
+
 /// What happens at one wall.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Wall {

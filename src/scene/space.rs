@@ -63,14 +63,7 @@ impl<const D: usize> Space<D> {
     }
 }
 
-/// Volume of a d-ball of radius r (a rod's length in 1D).
-pub fn ball_volume(d: usize, r: f64) -> f64 {
-    match d {
-        1 => 2.0 * r,
-        2 => std::f64::consts::PI * r * r,
-        _ => 4.0 / 3.0 * std::f64::consts::PI * r * r * r,
-    }
-}
+pub use crate::engine::boundary::ball_volume;
 
 /// Volume of the region [lo, hi].
 pub fn region_volume<const D: usize>(lo: &[f64; D], hi: &[f64; D]) -> f64 {

@@ -9,7 +9,7 @@
 //! the reach by `rounding` and the rounding can never hide a point.
 
 use super::Image;
-use super::store::{ListStore, room_for};
+use super::store::{Entry, ListStore, room_for};
 use crate::engine::boundary::SimBox;
 use crate::engine::vector::{Vector, norm2};
 
@@ -20,6 +20,16 @@ pub type Place<const D: usize> = [f32; D];
 
 /// A cell's points: each one's index and where it is.
 pub type Points<const D: usize> = [(u32, Place<D>)];
+
+/// A spilled cell's slot number stands in for its first point's index.
+impl<const D: usize> Entry for (u32, Place<D>) {
+    fn from_slot(slot: u32) -> Self {
+        (slot, [0.0; D])
+    }
+    fn slot(self) -> u32 {
+        self.0
+    }
+}
 
 #[derive(Debug, Clone)]
 pub struct Grid<const D: usize> {

@@ -23,7 +23,7 @@
 use super::grid::Grid;
 use super::store::{ListStore, room_for};
 use super::{Image, Neighbourhood, PLANE, Persist, image_shift};
-use crate::engine::boundary::SimBox;
+use crate::engine::boundary::{SimBox, ball_volume};
 use crate::engine::particle::Particle;
 use crate::engine::prefetch::prefetch;
 use crate::engine::vector::{Vector, add_scaled, axis0, dot, norm2, sub};
@@ -41,17 +41,6 @@ fn shell_per_free_path<const D: usize>(density: f64, sigma: f64) -> f64 {
     }
     let packing = std::f64::consts::PI / 6.0 * density * sigma.powi(3);
     1.0 + 0.2 * ((packing - 0.35) / 0.10).clamp(0.0, 1.0)
-}
-
-/// The mean length of a list of `n` particles spread evenly over the box
-/// (an ideal gas: a fluid's lists are a little shorter), `reach` apart at
-/// most.
-fn mean_list<const D: usize>(n: usize, reach: f64, sim_box: &SimBox<D>) -> f64 {
-    let ball = match D {
-        2 => std::f64::consts::PI * reach * reach,
-        _ => 4.0 / 3.0 * std::f64::consts::PI * reach.powi(3),
-    };
-    n as f64 / sim_box.volume() * ball
 }
 
 #[inline(always)]
@@ -386,7 +375,12 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
             plane_reach: plane.map_or(0.0, |k| particles[k].radius) + largest_radius + 2.0 * shell,
             centre: particles.iter().map(|p| p.pos).collect(),
             grid: Grid::new(n, reach, sim_box),
-            lists: ListStore::new(n, room_for(mean_list::<D>(n, reach, sim_box))),
+            // Room for the mean list of particles spread evenly over the box
+            // (an ideal gas: a fluid's lists are a little shorter).
+            lists: ListStore::new(
+                n,
+                room_for(n as f64 / sim_box.volume() * ball_volume(D, reach)),
+            ),
             plane,
             plane_list: Vec::new(),
             scratch: Default::default(),

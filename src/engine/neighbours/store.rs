@@ -39,16 +39,6 @@ impl Entry for u32 {
     }
 }
 
-/// A grid point: its index, and where it is.
-impl<const D: usize> Entry for (u32, [f32; D]) {
-    fn from_slot(slot: u32) -> Self {
-        (slot, [0.0; D])
-    }
-    fn slot(self) -> u32 {
-        self.0
-    }
-}
-
 #[derive(Debug, Clone)]
 pub(super) struct ListStore<T> {
     /// List i in line is `inline[i * room..][..len]`.
@@ -210,32 +200,32 @@ impl<T: Entry> ListStore<T> {
 
     /// List i (`spilled` or not) is full: give it more room.
     fn make_room(&mut self, i: usize, spilled: bool) {
-        let (_, n) = self.where_is(i);
         if spilled {
-            let (old, room) = (
-                self.spill_room,
-                self.spill_room + self.spill_room.div_ceil(2),
-            );
-            let slots = self.spill.len() / old;
-            widen_rooms(
-                &mut self.spill,
-                slots,
-                |_| old,
-                (old, room),
-                T::from_slot(0),
-            );
-            self.spill_room = room;
-            return;
+            self.widen_spill();
+        } else {
+            let (_, n) = self.where_is(i);
+            self.spill_out(i, n + 1);
         }
-        let at = i * self.room;
-        let moving = self.inline[at..at + n].to_vec();
-        self.spill_out(i, n + 1);
-        let (list, _) = self.room_mut(i);
-        list[..n].copy_from_slice(&moving);
-        self.len[i] |= n as u32;
     }
 
-    /// Give list i (empty, in line) a slot with room for `need` entries, or,
+    /// Half as much room again in every spill slot.
+    fn widen_spill(&mut self) {
+        let (old, room) = (
+            self.spill_room,
+            self.spill_room + self.spill_room.div_ceil(2),
+        );
+        let slots = self.spill.len() / old;
+        widen_rooms(
+            &mut self.spill,
+            slots,
+            |_| old,
+            (old, room),
+            T::from_slot(0),
+        );
+        self.spill_room = room;
+    }
+
+    /// Move list i (in line) to a slot with room for `need` entries, or,
     /// when one list in sixteen would have spilled (the room in line was
     /// sized for a density the system no longer has), widen every room in
     /// line by a quarter instead.
@@ -260,15 +250,18 @@ impl<T: Entry> ListStore<T> {
             }
         }
         while self.spill_room < need {
-            self.make_room(i, true);
+            self.widen_spill();
         }
         let slot = self.free.pop().unwrap_or_else(|| {
             self.spill
                 .resize(self.spill.len() + self.spill_room, T::from_slot(0));
             slots as u32
         });
-        self.inline[i * self.room] = T::from_slot(slot);
-        self.len[i] = SPILLED;
+        let (at, n) = (i * self.room, self.len[i] as usize);
+        let to = slot as usize * self.spill_room;
+        self.spill[to..to + n].copy_from_slice(&self.inline[at..at + n]);
+        self.inline[at] = T::from_slot(slot);
+        self.len[i] = SPILLED | n as u32;
     }
 }
 
