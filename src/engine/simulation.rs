@@ -378,11 +378,13 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 }
             }
         }
-        // Partners' records lie scattered in memory: ask for all of them
-        // first, so that their cache misses overlap.
+        // Partners' records and scheduled times lie scattered in memory: ask
+        // for all of them first, so that their cache misses overlap.
         if self.prefetch_partners {
+            let due = self.queue.times();
             for (j, _) in self.neighbours.candidates(i) {
                 prefetch(&self.particles[j]);
+                prefetch(&due[j]);
             }
         }
         let x_i = p.position_at(now);
