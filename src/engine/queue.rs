@@ -23,6 +23,10 @@ const NONE: u32 = u32::MAX;
 const EVENTS_PER_BUCKET: f64 = 4.0;
 /// The ring covers about this many mean times-to-event.
 const HORIZON: f64 = 4.0;
+/// Walk the next bucket ahead from this many particles on: measured, it
+/// saves 6 % with 32,000 spheres (state 9 MB) and 11 % with 256,000, but
+/// costs 2 % with 10^4 disks (2 MB), whose lists are still in cache.
+const WALK_FROM: usize = 20_000;
 /// The bucket of every event too far ahead to count its buckets.
 const FAR_BUCKET: f64 = (1u64 << 62) as f64;
 
@@ -60,6 +64,10 @@ pub struct EventQueue {
     current: u64,
     /// Ring length - 1 (the ring's length is a power of two).
     mask: usize,
+    /// Whether to walk the next bucket's list ahead (see `walk_ahead`), and
+    /// where the walk has got to (`NONE`: nowhere, and no walk).
+    walks: bool,
+    ahead: u32,
 }
 
 impl EventQueue {
@@ -83,6 +91,8 @@ impl EventQueue {
             inv_width: 1.0,
             current: 0,
             mask: 0,
+            walks: n >= WALK_FROM,
+            ahead: NONE,
         };
         q.rebuild();
         q
@@ -102,6 +112,7 @@ impl EventQueue {
     /// Replace particle i's event time.
     #[inline]
     pub fn set(&mut self, i: usize, t: f64) {
+        self.walk_ahead();
         let k = self.slot[i];
         let b = self.bucket(t);
         if k & IN_LIST == 0 && b <= self.current && t.is_finite() {
@@ -306,6 +317,33 @@ impl EventQueue {
                 self.file_overflow();
             }
             self.refile(slot);
+            if self.walks {
+                self.ask_for(self.heads[(slot + 1) & self.mask]);
+            }
+        }
+    }
+
+    /// One step along the next bucket's list. Refiling a bucket follows its
+    /// list from particle to particle, a chain of cache misses in a large
+    /// system; walking it while the current bucket is served, one step per
+    /// reschedule, lets those misses happen early. The walk only asks for
+    /// lines: a particle that has left the list since just leads it astray.
+    #[inline(always)]
+    fn walk_ahead(&mut self) {
+        if let Some(&n) = self.next.get(self.ahead as usize) {
+            self.ask_for(n);
+        }
+    }
+
+    /// Ask for the lines refiling j will read.
+    #[inline(always)]
+    fn ask_for(&mut self, j: u32) {
+        self.ahead = j;
+        let j = j as usize;
+        if j < self.time.len() {
+            prefetch(&self.next[j]);
+            prefetch(&self.time[j]);
+            prefetch(&self.slot[j]);
         }
     }
 
@@ -404,14 +442,22 @@ mod tests {
 
     /// Against a sorted reference: random reschedules (earlier, later, far
     /// beyond the ring, parked, tied), interleaved with pops that reschedule
-    /// the popped particle into the future, as the engine does.
+    /// the popped particle into the future, as the engine does; with and
+    /// without the walk ahead (which large systems take).
     #[test]
     fn agrees_with_a_sorted_reference_under_random_rescheduling() {
+        for walks in [false, true] {
+            agrees_with_a_sorted_reference(walks);
+        }
+    }
+
+    fn agrees_with_a_sorted_reference(walks: bool) {
         use rand::{RngExt, SeedableRng};
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
         let n = 300;
         let times: Vec<f64> = (0..n).map(|_| rng.random::<f64>()).collect();
         let mut q = EventQueue::from_times(times.clone());
+        q.walks = walks;
         let mut reference = times;
         for step in 0..200_000 {
             let expect = (0..n)
