@@ -20,6 +20,7 @@
 //! whose neighbourhood meets that slab. Without `PLANES` none of this is
 //! compiled into the event loop.
 
+use super::centres::Centres;
 use super::grid::Grid;
 use super::store::{ListStore, room_for};
 use super::{Image, Neighbourhood, PLANE, Persist, image_shift};
@@ -96,7 +97,7 @@ pub struct NeighbourList<const D: usize, const PLANES: bool = false> {
     /// that lists stay symmetric (`plane_reach` for a pair with the plane).
     reach: f64,
     plane_reach: f64,
-    centre: Vec<Vector<D>>,
+    centre: Centres<D>,
     /// The centres of every particle but the plane.
     grid: Grid<D>,
     /// Every ball's list.
@@ -157,7 +158,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
 
     /// Does the neighbourhood of ball i meet the slab of the plane k?
     fn meets_plane(&self, i: usize, k: usize) -> bool {
-        (self.centre[k][0] - self.centre[i][0]).abs() < self.plane_reach
+        (self.centre.get(k)[0] - self.centre.get(i)[0]).abs() < self.plane_reach
     }
 
     /// Put `e` into list i, keeping it sorted.
@@ -186,7 +187,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
     /// sees it (a plane's along axis 0 only).
     #[inline(always)]
     fn relative_to_centre(&self, i: usize, p: &Particle<D>) -> (Vector<D>, Vector<D>) {
-        let (d, v) = (sub(&p.pos, &self.centre[i]), p.vel);
+        let (d, v) = (sub(&p.pos, &self.centre.get(i)), p.vel);
         if PLANES && Some(i) == self.plane {
             (axis0(&d), axis0(&v))
         } else {
@@ -205,7 +206,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
     /// Everything whose neighbourhood meets that of i at its current centre,
     /// into `found`, sorted (`unsorted` is room to work in, only ever grown).
     fn find(&self, i: usize, found: &mut Vec<u32>, unsorted: &mut Vec<u32>) {
-        let c = &self.centre[i];
+        let c = &self.centre.get(i);
         let kept = if PLANES && Some(i) == self.plane {
             unsorted.clear();
             let reach = self.plane_reach + self.grid.rounding();
@@ -316,9 +317,9 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
     fn list_all(&mut self) {
         self.lists.clear();
         self.plane_list.clear();
-        for i in 0..self.centre.len() {
+        for (i, c) in self.centre.iter().enumerate() {
             if Some(i) != self.plane {
-                self.grid.place(i, &self.centre[i]);
+                self.grid.place(i, &c);
             }
         }
         let [mut buf, mut unsorted] = std::mem::take(&mut self.scratch);
@@ -373,7 +374,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
                 .collect(),
             reach,
             plane_reach: plane.map_or(0.0, |k| particles[k].radius) + largest_radius + 2.0 * shell,
-            centre: particles.iter().map(|p| p.pos).collect(),
+            centre: Centres::new(&sim_box.size, particles.iter().map(|p| p.pos)),
             grid: Grid::new(n, reach, sim_box),
             // Room for the mean list of particles spread evenly over the box
             // (an ideal gas: a fluid's lists are a little shorter).
@@ -404,7 +405,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
     #[inline(always)]
     fn prefetch(&self, i: usize) {
         self.lists.prefetch(i);
-        prefetch(&self.centre[i]);
+        prefetch(self.centre.slot(i));
     }
 
     /// When p (particle i) reaches the edge of its neighbourhood.
@@ -452,9 +453,9 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
                 wrapped = true;
             }
         }
-        self.centre[i] = p.pos;
+        let centre = self.centre.set(i, &p.pos);
         if Some(i) != self.plane {
-            self.grid.place(i, &p.pos);
+            self.grid.place(i, &centre);
         }
         self.relist(i);
         wrapped
@@ -495,11 +496,11 @@ impl<const D: usize, const PLANES: bool> Persist<D> for NeighbourList<D, PLANES>
             .chunks_exact(2)
             .map(|w| f64::from_bits(w[0] as u64 | (w[1] as u64) << 32))
             .collect();
-        for (c, saved) in lists.centre.iter_mut().zip(coords.chunks_exact(D)) {
-            c.copy_from_slice(saved);
-        }
-        if lists.centre.iter().flatten().any(|x| !x.is_finite()) {
+        if coords.iter().any(|x| !x.is_finite()) {
             return Err("neighbour-list state holds a centre that is not a finite number".into());
+        }
+        for (i, saved) in coords.chunks_exact(D).enumerate() {
+            lists.centre.set(i, &std::array::from_fn(|k| saved[k]));
         }
         lists.list_all();
         Ok(lists)
@@ -573,7 +574,7 @@ mod tests {
             let mut p = particles[i];
             let d: Vector<3> = std::array::from_fn(|_| rng.random_range(-1.0..1.0));
             let d = d.map(|x| x * lists.shell * 0.57);
-            p.pos = std::array::from_fn(|k| lists.centre[i][k] + d[k]);
+            p.pos = std::array::from_fn(|k| lists.centre.get(i)[k] + d[k]);
             p.vel = std::array::from_fn(|_| rng.random_range(-2.0..2.0));
             p.t = rng.random_range(-1.0..1.0);
             let t = p.t + rng.random_range(0.0..1.0) * lists.shell;

@@ -2,6 +2,7 @@
 //! (order never changes); 2D and 3D keep a neighbour list per particle,
 //! renewed when the particle has moved a shell's width.
 
+mod centres;
 mod chain;
 mod grid;
 mod lists;
