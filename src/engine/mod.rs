@@ -11,6 +11,7 @@ pub mod collide;
 mod contacts;
 pub mod dynamics;
 pub mod neighbours;
+mod next;
 pub mod observer;
 pub mod particle;
 mod prefetch;

@@ -14,10 +14,11 @@ use rand_chacha::ChaCha8Rng;
 
 use super::boundary::{Axis, SimBox, Wall};
 use super::neighbours::{PLANE, Persist, image_shift};
+use super::next::{Next, Packed};
 use super::observer::Observer;
 use super::particle::{Particle, Shape};
 use super::queue::EventQueue;
-use super::simulation::{Counts, Next, Simulation};
+use super::simulation::{Counts, Simulation};
 
 const MAGIC: &[u8; 8] = b"BONKERS\0";
 /// The format this build writes and reads.
@@ -96,7 +97,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
             }
         }
         for next in &self.next {
-            match *next {
+            match next.unpack() {
                 Next::Nothing => o.u8(0),
                 Next::Pair { j, stamp, image } => {
                     o.u8(1);
@@ -267,7 +268,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
             sim_box,
             neighbours,
             queue: EventQueue::from_times(times),
-            next,
+            next: next.into_iter().map(Packed::pack).collect(),
             stamp,
             now,
             origin,

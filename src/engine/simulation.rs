@@ -16,28 +16,12 @@ use super::build::{BuildError, check_overlaps, validate};
 use super::collide::{bounce, line_contact_time};
 use super::contacts::{BATCH, Batch};
 use super::neighbours::{Image, Neighbourhood, PLANE, image_shift, no_shift, separation};
+use super::next::{Next, Packed};
 use super::observer::{Observer, PairCollision, Snapshot, WallHit};
 use super::particle::Particle;
 use super::prefetch::prefetch;
 use super::thermal;
 use super::vector::{Vector, axis0, dot, norm2, sub};
-
-/// What a particle's scheduled event is.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) enum Next {
-    Nothing,
-    Pair {
-        j: u32,
-        stamp: u32,
-        image: Image,
-    },
-    Wall {
-        axis: u8,
-        high: bool,
-    },
-    /// The particle reaches the edge of its neighbourhood.
-    Renew,
-}
 
 /// Tallies of what the engine did.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -65,7 +49,7 @@ pub struct Simulation<const D: usize, N: Neighbourhood<D>, O: Observer<D>> {
     pub(super) sim_box: SimBox<D>,
     pub(super) neighbours: N,
     pub(super) queue: super::queue::EventQueue,
-    pub(super) next: Vec<Next>,
+    pub(super) next: Vec<Packed>,
     pub(super) stamp: Vec<u32>,
     /// Displacement of each periodic image code.
     pub(super) shifts: Vec<Vector<D>>,
@@ -111,7 +95,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             sim_box,
             neighbours,
             queue: super::queue::EventQueue::new(n),
-            next: vec![Next::Nothing; n],
+            next: vec![Packed::NOTHING; n],
             stamp: vec![0; n],
             now: 0.0,
             origin: 0.0,
@@ -253,9 +237,9 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     /// Apply particle i's scheduled event, which is due now.
     fn handle(&mut self, i: usize) {
         self.counts.events += 1;
-        match self.next[i] {
+        match self.next[i].unpack() {
             Next::Pair { j, stamp, image } => {
-                if self.stamp[j as usize] == stamp {
+                if Next::same_stamp(stamp, self.stamp[j as usize]) {
                     self.collide(i, j as usize, image);
                 } else {
                     self.counts.stale += 1;
@@ -452,7 +436,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 best = Next::Renew;
             }
         }
-        self.next[i] = best;
+        self.next[i] = Packed::pack(best);
         self.queue.set(i, best_t);
     }
 
