@@ -5,6 +5,7 @@
 //! the observer hooks, the checks a system passes before it runs, and the
 //! `Dynamics` trait a run loop drives any integrator through.
 
+pub mod bodies;
 pub mod boundary;
 pub mod build;
 pub mod collide;
@@ -22,6 +23,7 @@ pub mod stepper;
 pub mod thermal;
 pub mod vector;
 
+pub use bodies::{Bodies, Body};
 pub use boundary::{Axis, SimBox, Wall};
 pub use build::BuildError;
 pub use dynamics::Dynamics;

@@ -2,8 +2,8 @@
 //! implements compiles to nothing: an observable a run does not ask for costs
 //! no work per event.
 
+use super::bodies::Bodies;
 use super::boundary::SimBox;
-use super::particle::Particle;
 use super::vector::Vector;
 
 /// A pair collision, as the virial pressure needs it.
@@ -40,7 +40,7 @@ pub struct Snapshot<'a, const D: usize> {
     pub time: f64,
     /// Engine-internal time (positions are stored relative to it).
     pub(crate) now: f64,
-    pub particles: &'a [Particle<D>],
+    pub particles: &'a Bodies<D>,
     pub sim_box: &'a SimBox<D>,
 }
 
@@ -57,7 +57,7 @@ impl<const D: usize> Snapshot<'_, D> {
     }
 
     pub fn kinetic_energy(&self) -> f64 {
-        self.particles.iter().map(Particle::kinetic_energy).sum()
+        self.particles.iter().map(|p| p.kinetic_energy()).sum()
     }
 }
 

@@ -1,7 +1,7 @@
 //! A hard particle. Its position is stored at its own last-event time `t`
 //! (lazy update): only the particles an event touches are moved.
 
-use super::vector::{Vector, add_scaled};
+use super::vector::Vector;
 
 /// What a particle is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -14,10 +14,9 @@ pub enum Shape {
     Plane,
 }
 
-/// Laid out so that what a prediction reads of a partner (position,
-/// velocity, time, radius) comes first, within 64 bytes in 3D.
+/// A particle whole, as scenes build it and observers read it (the event
+/// engine keeps it in two parts: see `bodies.rs`).
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[repr(C)]
 pub struct Particle<const D: usize> {
     /// Position at time `t`.
     pub pos: Vector<D>,
@@ -62,19 +61,6 @@ impl<const D: usize> Particle<D> {
     pub fn with_species(mut self, species: u16) -> Self {
         self.species = species;
         self
-    }
-
-    /// Where the particle is at time `t` (free flight since its last event).
-    #[inline(always)]
-    pub fn position_at(&self, t: f64) -> Vector<D> {
-        add_scaled(&self.pos, t - self.t, &self.vel)
-    }
-
-    /// Move the stored position forward to time `t`.
-    #[inline(always)]
-    pub fn advance_to(&mut self, t: f64) {
-        self.pos = self.position_at(t);
-        self.t = t;
     }
 
     pub fn mass(&self) -> f64 {

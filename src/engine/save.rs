@@ -12,6 +12,7 @@ use std::io::{self, Read, Write};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
+use super::bodies::Bodies;
 use super::boundary::{Axis, SimBox, Wall};
 use super::neighbours::{PLANE, Persist, image_shift};
 use super::next::{Next, Packed};
@@ -264,7 +265,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
             shifts: (0..images)
                 .map(|c| image_shift(c as u8, &sim_box.size))
                 .collect(),
-            particles,
+            particles: Bodies::new(&particles),
             sim_box,
             neighbours,
             queue: EventQueue::from_times(times),

@@ -8,9 +8,12 @@
 //! collision predicted with a partner that has since collided with a third is
 //! stale and is simply re-predicted (each particle carries an event stamp).
 
+use std::borrow::Borrow;
+
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
+use super::bodies::Bodies;
 use super::boundary::{SimBox, Wall, wall_time};
 use super::build::{BuildError, check_overlaps, validate};
 use super::collide::{bounce, line_contact_time};
@@ -45,7 +48,7 @@ pub enum Stop {
 
 #[derive(Debug, Clone)]
 pub struct Simulation<const D: usize, N: Neighbourhood<D>, O: Observer<D>> {
-    pub(super) particles: Vec<Particle<D>>,
+    pub(super) particles: Bodies<D>,
     pub(super) sim_box: SimBox<D>,
     pub(super) neighbours: N,
     pub(super) queue: super::queue::EventQueue,
@@ -91,7 +94,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             shifts: (0..3u32.pow(D as u32))
                 .map(|c| image_shift(c as Image, &sim_box.size))
                 .collect(),
-            particles,
+            particles: Bodies::new(&particles),
             sim_box,
             neighbours,
             queue: super::queue::EventQueue::new(n),
@@ -134,7 +137,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         self.origin + self.now
     }
 
-    pub fn particles(&self) -> &[Particle<D>] {
+    pub fn particles(&self) -> &Bodies<D> {
         &self.particles
     }
 
@@ -152,7 +155,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     }
 
     pub fn kinetic_energy(&self) -> f64 {
-        self.particles.iter().map(Particle::kinetic_energy).sum()
+        self.particles.iter().map(|p| p.kinetic_energy()).sum()
     }
 
     pub fn momentum(&self) -> Vector<D> {
@@ -277,7 +280,13 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             None
         };
         if let Some(n) = normal
-            && let Some(b) = bounce(&p.vel, &q.vel, p.inv_mass, q.inv_mass, &n)
+            && let Some(b) = bounce(
+                &p.vel,
+                &q.vel,
+                self.particles.inv_mass(i),
+                self.particles.inv_mass(j),
+                &n,
+            )
         {
             for k in 0..D {
                 self.particles[i].vel[k] += b.dv_i[k];
@@ -303,6 +312,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
 
     fn hit_wall(&mut self, i: usize, axis: usize, high: bool) {
         let now = self.now;
+        let inv_mass = self.particles.inv_mass(i);
         let p = &mut self.particles[i];
         p.advance_to(now);
         let outward = if high { 1.0 } else { -1.0 };
@@ -314,10 +324,10 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 Wall::Hard => p.vel[axis] = -p.vel[axis],
                 Wall::Thermal { temperature } => {
                     p.vel =
-                        thermal::emit::<D>(&mut self.rng, temperature, p.inv_mass, axis, -outward);
+                        thermal::emit::<D>(&mut self.rng, temperature, inv_mass, axis, -outward);
                 }
             }
-            let m = p.mass();
+            let m = 1.0 / inv_mass;
             let impulse = std::array::from_fn(|k| m * (p.vel[k] - before[k]));
             let energy_gain = 0.5 * m * (norm2(&p.vel) - norm2(&before));
             self.counts.wall_hits += 1;
@@ -392,8 +402,11 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         } else {
             // Everything the gather reads, as plain slices: their lengths and
             // addresses stay in registers while the batch is written.
-            let (particles, shifts, due) =
-                (&self.particles[..], &self.shifts[..], self.queue.times());
+            let (particles, shifts, due) = (
+                self.particles.bodies(),
+                &self.shifts[..],
+                self.queue.times(),
+            );
             let batch = &mut self.batch;
             let mut candidates = self.neighbours.candidates(i);
             loop {
@@ -444,7 +457,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     /// and all times shift, so `now - t` never loses digits to a large `now`.
     fn rebase(&mut self) {
         let now = self.now;
-        for p in &mut self.particles {
+        for p in self.particles.bodies_mut() {
             p.advance_to(now);
             p.t = 0.0;
         }
@@ -458,7 +471,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     /// distance (0 when none overlap). O(N) over neighbour cells; for tests.
     pub fn max_overlap(&self) -> f64 {
         let mut worst: f64 = 0.0;
-        for (i, p) in self.particles.iter().enumerate() {
+        for (i, p) in self.particles.bodies().iter().enumerate() {
             let x_i = p.position_at(self.now);
             for (j, image) in self.neighbours.candidates(i) {
                 let q = &self.particles[j];
@@ -476,10 +489,10 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     /// How far any particle sits outside a wall, in diameters (0 when none).
     pub fn max_wall_violation(&self) -> f64 {
         let mut worst: f64 = 0.0;
-        for p in &self.particles {
+        for (i, p) in self.particles.bodies().iter().enumerate() {
             let x = p.position_at(self.now);
             // A plane spans every axis but 0.
-            for k in 0..if p.is_plane() { 1 } else { D } {
+            for k in 0..if self.particles.is_plane(i) { 1 } else { D } {
                 if !self.sim_box.axes[k].is_periodic() {
                     let out = (p.radius - x[k]).max(x[k] + p.radius - self.sim_box.size[k]);
                     worst = worst.max(out / (2.0 * p.radius).max(1e-300));
@@ -495,15 +508,23 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     }
 }
 
-/// See [`Simulation::degrees_of_freedom`].
-pub fn degrees_of_freedom<const D: usize>(particles: &[Particle<D>], sim_box: &SimBox<D>) -> f64 {
-    let movable = particles.iter().filter(|p| !p.is_immovable());
-    let free: usize = movable
-        .clone()
-        .map(|p| if p.is_plane() { 1 } else { D })
-        .sum();
-    let anchored = particles.iter().any(Particle::is_immovable);
-    let conserved = if anchored || movable.count() == 0 {
+/// See [`Simulation::degrees_of_freedom`]; `particles` a slice of them or
+/// a [`Bodies`].
+pub fn degrees_of_freedom<const D: usize, P: Borrow<Particle<D>>>(
+    particles: impl IntoIterator<Item = P>,
+    sim_box: &SimBox<D>,
+) -> f64 {
+    let (mut free, mut movable, mut anchored) = (0usize, 0usize, false);
+    for p in particles {
+        let p = p.borrow();
+        if p.is_immovable() {
+            anchored = true;
+        } else {
+            movable += 1;
+            free += if p.is_plane() { 1 } else { D };
+        }
+    }
+    let conserved = if anchored || movable == 0 {
         0
     } else {
         sim_box.axes.iter().filter(|a| a.is_periodic()).count()

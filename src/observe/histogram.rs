@@ -36,7 +36,7 @@ impl<const D: usize> ParticleHistogram<D> {
 impl<const D: usize> Observer<D> for ParticleHistogram<D> {
     fn sample(&mut self, s: &Snapshot<D>) {
         let bins = self.counts.len() as f64;
-        for u in s.particles.iter().filter_map(self.value) {
+        for u in s.particles.iter().filter_map(|p| (self.value)(&p)) {
             let bin = ((u - self.lo) / (self.hi - self.lo) * bins).floor();
             if (0.0..bins).contains(&bin) {
                 self.counts[bin as usize] += 1.0;

@@ -47,7 +47,10 @@ impl<const D: usize> Observer<D> for PairDistance {
         }
         let periodic: [bool; D] = std::array::from_fn(|k| s.sim_box.axes[k].is_periodic());
         let at: Vec<[f64; D]> = (0..s.particles.len())
-            .filter(|&i| !s.particles[i].is_immovable() && !s.particles[i].is_plane())
+            .filter(|&i| {
+                let p = s.particles.get(i);
+                !p.is_immovable() && !p.is_plane()
+            })
             .map(|i| s.position(i))
             .collect();
         let bins = self.counts.len();

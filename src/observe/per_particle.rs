@@ -141,7 +141,7 @@ impl<const D: usize> Measure<D> for PerParticle<D> {
 /// thermal widths sqrt(kT/m), kT = 2E/(d N), for large N (where the reach
 /// is mostly empty). Immovable particles and planes are left out.
 pub fn velocity_range<const D: usize>(s: &Snapshot<D>, i: usize) -> Option<(f64, f64)> {
-    let p = &s.particles[i];
+    let p = s.particles.get(i);
     if p.is_immovable() || p.is_plane() {
         return None;
     }
@@ -171,10 +171,11 @@ mod tests {
             Particle::<1>::new([3.0], [-1.0], 4.0, 0.0),
         ];
         let sim_box = SimBox::hard([4.0]);
+        let bodies = crate::engine::Bodies::new(&particles);
         let s = Snapshot {
             time: 0.0,
             now: 0.0,
-            particles: &particles,
+            particles: &bodies,
             sim_box: &sim_box,
         };
         let mut h = Box::new(PerParticle::new(

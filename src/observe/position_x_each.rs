@@ -32,7 +32,7 @@ impl Observable for PositionXEach {
 }
 
 fn range<const D: usize>(s: &Snapshot<D>, i: usize) -> Option<(f64, f64)> {
-    let p = &s.particles[i];
+    let p = s.particles.get(i);
     (!p.is_immovable() && !p.is_plane()).then_some((0.0, s.sim_box.size[0]))
 }
 

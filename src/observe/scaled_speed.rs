@@ -36,7 +36,7 @@ impl Observable for ScaledSpeed {
     }
 }
 
-fn moving<const D: usize>(p: &&Particle<D>) -> bool {
+fn moving<const D: usize>(p: &Particle<D>) -> bool {
     !p.is_immovable() && !p.is_plane()
 }
 

@@ -46,10 +46,11 @@ fn observe<const D: usize>(kind: Kind, names: &[&str]) -> Result<RunOutput, Stri
         Some(1),
     )?;
     set.recording = true;
+    let bodies = crate::engine::Bodies::new(&particles);
     let snapshot = |time| Snapshot {
         time,
         now: 0.0,
-        particles: &particles,
+        particles: &bodies,
         sim_box: &sim_box,
     };
     set.sample(&snapshot(0.0));
@@ -219,10 +220,11 @@ fn results_come_in_a_fixed_order() {
     )
     .unwrap();
     set.recording = true;
+    let bodies = crate::engine::Bodies::new(&particles);
     set.sample(&Snapshot {
         time: 0.0,
         now: 0.0,
-        particles: &particles,
+        particles: &bodies,
         sim_box: &sim_box,
     });
     let species = SPECIES.map(String::from);
@@ -341,10 +343,11 @@ fn patterns_match_the_names_they_stand_for() {
 /// pair collision, a sample.
 fn feed<const D: usize>(set: &mut super::ObserverSet<D>, t0: f64) {
     let (particles, sim_box) = scene::<D>();
+    let bodies = crate::engine::Bodies::new(&particles);
     let snapshot = |time| Snapshot {
         time,
         now: 0.0,
-        particles: &particles,
+        particles: &bodies,
         sim_box: &sim_box,
     };
     set.sample(&snapshot(t0));

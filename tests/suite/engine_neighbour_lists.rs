@@ -6,7 +6,7 @@
 use crate::common;
 
 use bonkers::engine::{
-    Image, NeighbourList, Neighbourhood, Observer, PLANE, PairCollision, Particle, SimBox,
+    Body, Image, NeighbourList, Neighbourhood, Observer, PLANE, PairCollision, Particle, SimBox,
     Simulation, Snapshot, Stop, WithPlane,
 };
 
@@ -44,11 +44,11 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for AllPairs<D, PLANES
         })
     }
 
-    fn next_renewal(&self, _i: usize, _p: &Particle<D>) -> Option<f64> {
+    fn next_renewal(&self, _i: usize, _p: &Body<D>) -> Option<f64> {
         None
     }
 
-    fn renew(&mut self, _i: usize, _p: &mut Particle<D>, _now: f64) -> bool {
+    fn renew(&mut self, _i: usize, _p: &mut Body<D>, _now: f64) -> bool {
         false
     }
 }
@@ -171,7 +171,8 @@ impl<const D: usize> Observer<D> for PlaneEnergy {
                 self.crossed = true;
             }
         }
-        self.batch.push(s.particles[self.plane].kinetic_energy());
+        self.batch
+            .push(s.particles.get(self.plane).kinetic_energy());
         if self.batch.len() == 500 {
             self.means.push(self.batch.iter().sum::<f64>() / 500.0);
             self.batch.clear();

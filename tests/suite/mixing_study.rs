@@ -64,7 +64,7 @@ fn equal_masses_never_mix() {
     assert_eq!(before.iter().filter(|v| **v > 0.0).count(), 1);
     let mut sim = Rods::new(built.particles.clone(), built.sim_box, (), 1).expect("engine");
     sim.run(Stop::Collisions(100_000));
-    let after = speeds(sim.particles());
+    let after = speeds(&sim.particles().to_vec());
     for (a, b) in before.iter().zip(&after) {
         assert!((a - b).abs() <= 1e-12 * 4.0, "{a} vs {b}");
     }

@@ -2,6 +2,7 @@
 //! either side (and, on a periodic line, the two ends hit each other).
 
 use super::{Image, Neighbourhood, Persist};
+use crate::engine::bodies::Body;
 use crate::engine::boundary::SimBox;
 use crate::engine::particle::Particle;
 
@@ -46,11 +47,11 @@ impl<const D: usize> Neighbourhood<D> for Chain {
         if high { i + 1 == self.n } else { i == 0 }
     }
 
-    fn next_renewal(&self, _i: usize, _p: &Particle<D>) -> Option<f64> {
+    fn next_renewal(&self, _i: usize, _p: &Body<D>) -> Option<f64> {
         None
     }
 
-    fn renew(&mut self, _i: usize, _p: &mut Particle<D>, _now: f64) -> bool {
+    fn renew(&mut self, _i: usize, _p: &mut Body<D>, _now: f64) -> bool {
         false
     }
 }

@@ -24,6 +24,7 @@ use super::centres::Centres;
 use super::grid::Grid;
 use super::store::{ListStore, room_for};
 use super::{Image, Neighbourhood, PLANE, Persist, image_shift};
+use crate::engine::bodies::Body;
 use crate::engine::boundary::{SimBox, ball_volume};
 use crate::engine::particle::Particle;
 use crate::engine::prefetch::prefetch;
@@ -186,7 +187,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
     /// Where p is from its centre, and how it moves, as its neighbourhood
     /// sees it (a plane's along axis 0 only).
     #[inline(always)]
-    fn relative_to_centre(&self, i: usize, p: &Particle<D>) -> (Vector<D>, Vector<D>) {
+    fn relative_to_centre(&self, i: usize, p: &Body<D>) -> (Vector<D>, Vector<D>) {
         let (d, v) = (sub(&p.pos, &self.centre.get(i)), p.vel);
         if PLANES && Some(i) == self.plane {
             (axis0(&d), axis0(&v))
@@ -410,7 +411,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
 
     /// When p (particle i) reaches the edge of its neighbourhood.
     #[inline]
-    fn next_renewal(&self, i: usize, p: &Particle<D>) -> Option<f64> {
+    fn next_renewal(&self, i: usize, p: &Body<D>) -> Option<f64> {
         let (d, v) = self.relative_to_centre(i, p);
         // Solve |d + v s| = edge for s > 0, d inside: cancellation-free roots.
         let edge = self.edge();
@@ -434,14 +435,14 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
     /// hair inside the shell, so a yes that round-off got wrong at the edge
     /// still leaves p inside the shell the lists were drawn with.
     #[inline(always)]
-    fn inside_at(&self, i: usize, p: &Particle<D>, t: f64) -> bool {
+    fn inside_at(&self, i: usize, p: &Body<D>, t: f64) -> bool {
         let (d, v) = self.relative_to_centre(i, p);
         let edge = self.edge();
         let x = add_scaled(&d, t - p.t, &v);
         dot(&x, &x) < edge * edge
     }
 
-    fn renew(&mut self, i: usize, p: &mut Particle<D>, now: f64) -> bool {
+    fn renew(&mut self, i: usize, p: &mut Body<D>, now: f64) -> bool {
         p.advance_to(now);
         let mut wrapped = false;
         for k in 0..D {
@@ -568,10 +569,11 @@ mod tests {
         let mut particles = vec![ball([2.0; 3]), ball([8.0; 3])];
         particles.push(Particle::plane(5.0, 0.0, 10.0, 0.5));
         let lists = NeighbourList::<3, true>::build(&particles, &sim_box).unwrap();
+        let bodies = crate::engine::bodies::Bodies::new(&particles);
         let (mut inside, mut outside) = (0, 0);
         for _ in 0..20_000 {
             let i = rng.random_range(0..3);
-            let mut p = particles[i];
+            let mut p = bodies.bodies()[i];
             let d: Vector<3> = std::array::from_fn(|_| rng.random_range(-1.0..1.0));
             let d = d.map(|x| x * lists.shell * 0.57);
             p.pos = std::array::from_fn(|k| lists.centre.get(i)[k] + d[k]);

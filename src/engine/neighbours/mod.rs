@@ -11,6 +11,7 @@ mod store;
 pub use chain::Chain;
 pub use lists::NeighbourList;
 
+use super::bodies::Body;
 use super::boundary::SimBox;
 use super::particle::Particle;
 use super::vector::Vector;
@@ -78,17 +79,17 @@ pub trait Neighbourhood<const D: usize>: Sized + Clone + Send {
     #[inline(always)]
     fn prefetch(&self, _i: usize) {}
     /// When `p` (particle i) next needs its neighbourhood renewed (absolute time).
-    fn next_renewal(&self, i: usize, p: &Particle<D>) -> Option<f64>;
+    fn next_renewal(&self, i: usize, p: &Body<D>) -> Option<f64>;
     /// Whether `p` (particle i) is still inside its neighbourhood at time `t`:
     /// then its renewal comes later (a line leaves a ball only once), and
     /// need not be computed. "No" when unsure.
     #[inline(always)]
-    fn inside_at(&self, _i: usize, _p: &Particle<D>, _t: f64) -> bool {
+    fn inside_at(&self, _i: usize, _p: &Body<D>, _t: f64) -> bool {
         false
     }
     /// Renew particle i's neighbourhood at time `now` (moving `p` there);
     /// returns true if its stored position jumped by a box length.
-    fn renew(&mut self, i: usize, p: &mut Particle<D>, now: f64) -> bool;
+    fn renew(&mut self, i: usize, p: &mut Body<D>, now: f64) -> bool;
 }
 
 /// A neighbourhood's state for a save file: what `build` cannot recompute

@@ -11,6 +11,7 @@ mod cells;
 mod step;
 mod tally;
 
+use super::bodies::Bodies;
 use super::boundary::SimBox;
 use super::build::{BuildError, validate};
 use super::dynamics::Dynamics;
@@ -39,6 +40,8 @@ pub struct Stepper<const D: usize, O: Observer<D>> {
     sample_every: Option<f64>,
     sample_start: f64,
     samples_taken: u64,
+    /// The particles as a snapshot shows them, refreshed at each sample.
+    view: Bodies<D>,
     observer: O,
 }
 
@@ -100,6 +103,7 @@ impl<const D: usize, O: Observer<D>> Stepper<D, O> {
             sample_every: None,
             sample_start: 0.0,
             samples_taken: 0,
+            view: Bodies::default(),
             observer,
         })
     }
@@ -123,10 +127,11 @@ impl<const D: usize, O: Observer<D>> Stepper<D, O> {
             self.counts.samples += 1;
             // Particles sit at `time`; `now` is the sample's offset from it
             // (free flight until the step resolves its bounces).
+            self.view.refresh(&self.particles);
             let snapshot = Snapshot {
                 time: ts,
                 now: ts - self.time,
-                particles: &self.particles,
+                particles: &self.view,
                 sim_box: &self.sim_box,
             };
             self.observer.sample(&snapshot);
