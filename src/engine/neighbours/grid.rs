@@ -1,35 +1,19 @@
-//! A grid of cells, each holding its points with their positions side by
-//! side, for finding every point within one cell width of another in O(1)
-//! and in a few contiguous reads. On periodic axes the grid wraps, and a
-//! point found across the boundary comes with the image code of the shift
-//! that brings it next to the one asked about.
+//! A grid of cells, each holding the indices of its points, for finding
+//! every point within one cell width of another in O(1) and in a few
+//! contiguous reads. On periodic axes the grid wraps, and a point found
+//! across the boundary comes with the image code of the shift that brings it
+//! next to the one asked about.
 //!
-//! Positions are kept in single precision, half the bytes to read: a search
-//! only has to find a superset of the points within its reach, so it widens
-//! the reach by `rounding` and the rounding can never hide a point.
+//! The grid keeps no positions: the caller has every point's (its centre)
+//! already, 4 bytes a point here instead of 16 with a copy in single
+//! precision.
 
 use super::Image;
-use super::store::{Entry, ListStore, room_for};
+use super::store::{ListStore, room_for};
 use crate::engine::boundary::SimBox;
 use crate::engine::vector::{Vector, norm2};
 
 const NONE: u32 = u32::MAX;
-
-/// Where a point is, in single precision.
-pub type Place<const D: usize> = [f32; D];
-
-/// A cell's points: each one's index and where it is.
-pub type Points<const D: usize> = [(u32, Place<D>)];
-
-/// A spilled cell's slot number stands in for its first point's index.
-impl<const D: usize> Entry for (u32, Place<D>) {
-    fn from_slot(slot: u32) -> Self {
-        (slot, [0.0; D])
-    }
-    fn slot(self) -> u32 {
-        self.0
-    }
-}
 
 #[derive(Debug, Clone)]
 pub struct Grid<const D: usize> {
@@ -42,7 +26,7 @@ pub struct Grid<const D: usize> {
     /// cell's share (a fuller cell spills, see `store.rs`). A cell's place
     /// is computed, not read from a header, so a search can ask for all its
     /// cells' points at once (see `cells_around`).
-    cells: ListStore<(u32, Place<D>)>,
+    cells: ListStore,
     /// Each point's cell.
     cell: Vec<u32>,
     /// See [`Grid::rounding`].
@@ -84,14 +68,14 @@ impl<const D: usize> Grid<D> {
             stride,
             cells: ListStore::new(cells, room_for(points as f64 / cells as f64)),
             cell: vec![NONE; points],
-            rounding: 2.0 * f32::EPSILON as f64 * norm2(&sim_box.size).sqrt(),
+            rounding: 4.0 * f64::EPSILON * norm2(&sim_box.size).sqrt(),
         }
     }
 
-    /// A bound on how far a stored position is from the true one, with a
-    /// margin: rounding to single precision moves each coordinate by at most
-    /// half a unit in the last place of the box's length on that axis, so
-    /// the whole point by at most half an epsilon of the box's diagonal.
+    /// A bound, with a margin, on the round-off in placing a point in its
+    /// cell and in measuring how far apart two points are: a few units in
+    /// the last place of the box's diagonal. A search widened by it finds
+    /// every point within its reach whatever the round-off.
     pub fn rounding(&self) -> f64 {
         self.rounding
     }
@@ -101,7 +85,7 @@ impl<const D: usize> Grid<D> {
     }
 
     /// Cell c's points.
-    fn members(&self, c: usize) -> &Points<D> {
+    fn members(&self, c: usize) -> &[u32] {
         self.cells.get(c)
     }
 
@@ -112,32 +96,28 @@ impl<const D: usize> Grid<D> {
         let cell = (0..D)
             .map(|k| c[k] as usize * self.stride[k])
             .sum::<usize>();
-        let x = x.map(|x| x as f32);
         if self.cell[i] != NONE {
             let old = self.cell[i] as usize;
-            let members = self.cells.get_mut(old);
-            let at = members.iter().position(|m| m.0 == i as u32);
-            let at = at.expect("filed");
             if old == cell {
-                members[at].1 = x;
                 return;
             }
-            self.cells.swap_remove(old, at);
+            let at = self.cells.get(old).iter().position(|&m| m == i as u32);
+            self.cells.swap_remove(old, at.expect("filed"));
         }
-        self.cells.push(cell, (i as u32, x));
+        self.cells.push(cell, i as u32);
         self.cell[i] = cell as u32;
     }
 
     /// The (up to) 3^D cells around position `x` that may hold a point within
     /// `reach` of it (x itself may be filed there too), into `cells`, and how
-    /// many there are: each one's points, with where they are, and the image
-    /// code they are seen through. (Written in place: returned, the array
+    /// many there are: each one's points and the image code they are seen
+    /// through. (Written in place: returned, the array
     /// would be copied.)
     pub fn cells_around<'a>(
         &'a self,
         x: &Vector<D>,
         reach: f64,
-        cells: &mut [(Image, &'a Points<D>); 27],
+        cells: &mut [(Image, &'a [u32]); 27],
     ) -> usize {
         let mut near = [(0usize, 0 as Image); 27];
         let count = self.cells_near(x, reach, &mut near);
@@ -160,9 +140,8 @@ impl<const D: usize> Grid<D> {
     ///
     /// A cell is left out when its nearest face, edge or corner is beyond
     /// `reach` and twice the rounding (a corner cell, half the time, in 3D):
-    /// a point in it is then, rounded, more than `reach` and the rounding
-    /// away, so the caller's search, widened by the rounding, would not have
-    /// kept it.
+    /// a point in it is then more than `reach` and the rounding away, so the
+    /// caller's search, widened by the rounding, would not have kept it.
     fn cells_near(&self, x: &Vector<D>, reach: f64, near: &mut [(usize, Image); 27]) -> usize {
         let c = self.coords(x);
         // Per axis, the (up to) three neighbouring rows: their part of the
@@ -224,17 +203,17 @@ impl<const D: usize> Grid<D> {
         }
     }
 
-    /// Call `f(j, x_j)` for every point filed in the slab of cells whose
-    /// axis-0 range meets [lo, hi].
-    pub fn for_each_in_slab(&self, lo: f64, hi: f64, mut f: impl FnMut(usize, &Place<D>)) {
+    /// Call `f(j)` for every point filed in the slab of cells whose axis-0
+    /// range meets [lo, hi].
+    pub fn for_each_in_slab(&self, lo: f64, hi: f64, mut f: impl FnMut(usize)) {
         let first = ((lo / self.width[0]).floor().max(0.0) as u32).min(self.n[0] - 1);
         let last = ((hi / self.width[0]).floor().max(0.0) as u32).min(self.n[0] - 1);
         let rest: usize = (1..D).map(|k| self.n[k] as usize).product();
         for c0 in first..=last {
             // Cells sharing an axis-0 index are n[0] apart in the linear order.
             for r in 0..rest {
-                for (j, x_j) in self.members(c0 as usize + r * self.n[0] as usize) {
-                    f(*j as usize, x_j);
+                for &j in self.members(c0 as usize + r * self.n[0] as usize) {
+                    f(j as usize);
                 }
             }
         }
@@ -267,7 +246,7 @@ mod tests {
         let ids = |x: &Vector<3>| {
             let c = grid.coords(x);
             let cell = (0..3).map(|k| c[k] as usize * grid.stride[k]).sum();
-            let mut ids: Vec<u32> = grid.members(cell).iter().map(|p| p.0).collect();
+            let mut ids = grid.members(cell).to_vec();
             ids.sort();
             ids
         };
@@ -305,7 +284,7 @@ mod tests {
             let mut seen = vec![false; points.len()];
             for &(image, members) in &cells[..count] {
                 let s = image_shift(image, &sim_box.size);
-                for &(j, _) in members {
+                for &j in members {
                     let r: Vector<D> = std::array::from_fn(|k| points[j as usize][k] + s[k] - x[k]);
                     seen[j as usize] |= norm2(&r) < reach * reach;
                 }

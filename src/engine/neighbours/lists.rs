@@ -102,7 +102,7 @@ pub struct NeighbourList<const D: usize, const PLANES: bool = false> {
     /// The centres of every particle but the plane.
     grid: Grid<D>,
     /// Every ball's list.
-    lists: ListStore<u32>,
+    lists: ListStore,
     /// The plane's index (with `PLANES`), and its list, sorted.
     plane: Option<usize>,
     plane_list: Vec<u32>,
@@ -211,17 +211,16 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         let kept = if PLANES && Some(i) == self.plane {
             unsorted.clear();
             let reach = self.plane_reach + self.grid.rounding();
-            self.grid
-                .for_each_in_slab(c[0] - reach, c[0] + reach, |j, c_j| {
-                    if (c_j[0] as f64 - c[0]).abs() < reach {
-                        unsorted.push(pack(j, PLANE));
-                    }
-                });
+            self.grid.for_each_in_slab(c[0] - reach, c[0] + reach, |j| {
+                if (self.centre.get(j)[0] - c[0]).abs() < reach {
+                    unsorted.push(pack(j, PLANE));
+                }
+            });
             unsorted.len()
         } else {
             // Most points tested are not neighbours, at random: write every
             // one and keep it or not without a branch that would mispredict.
-            // The grid's positions are rounded: widen the reach to match.
+            // Widened by the round-off, the reach can never miss a point.
             let reach = self.reach + self.grid.rounding();
             let reach2 = reach * reach;
             let mut cells = [(0, &[][..]); 27];
@@ -232,11 +231,20 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
             if unsorted.len() < room {
                 unsorted.resize(room, 0);
             }
+            // The points' centres are scattered reads: ask for them all
+            // first, so that their misses overlap.
+            for &(_, points) in cells {
+                for &j in points {
+                    prefetch(self.centre.slot(j as usize));
+                }
+            }
             let mut kept = 0;
             for &(image, points) in cells {
+                // Where i's centre is, seen from the points of this image.
                 let s = &self.shifts[image as usize];
-                for &(j, c_j) in points {
-                    let r: Vector<D> = std::array::from_fn(|k| c_j[k] as f64 + s[k] - c[k]);
+                let from: Vector<D> = std::array::from_fn(|k| c[k] - s[k]);
+                for &j in points {
+                    let r = sub(&self.centre.get(j as usize), &from);
                     unsorted[kept] = pack(j as usize, image);
                     kept += ((j as usize != i) & (norm2(&r) < reach2)) as usize;
                 }
@@ -513,10 +521,13 @@ mod tests {
     use super::*;
 
     /// Two spheres whose centres are a hair inside the reach, in the far
-    /// corner of a large box where single-precision rounding of the grid's
-    /// positions is largest: each must be in the other's list.
+    /// corner of a large box where round-off (of the centres' fixed point,
+    /// and in the distance) is largest: each must be in the other's list
+    /// whenever their stored centres are within the reach.
     #[test]
     fn a_pair_just_inside_the_reach_is_listed_despite_rounding() {
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
         let side = 3072.0;
         let sim_box = SimBox::<3>::periodic([side; 3]);
         let corner = [side - 0.3, side - 1.7, side - 0.9];
@@ -526,13 +537,23 @@ mod tests {
         let reach = NeighbourList::<3>::build(&pair([1.0; 3]), &sim_box)
             .unwrap()
             .reach;
-        for direction in [[1.0, 0.0, 0.0], [0.6, -0.8, 0.0], [0.48, 0.6, 0.64]] {
-            let inside = reach * (1.0 - 1e-12);
-            let partner = std::array::from_fn(|k| corner[k] - inside * direction[k]);
+        let mut inside = 0;
+        for _ in 0..200 {
+            let u: Vector<3> = std::array::from_fn(|_| rng.random_range(-1.0..1.0));
+            let direction = u.map(|x| x / norm2(&u).sqrt());
+            let hair = 1.0 - 1e-9 * rng.random::<f64>();
+            let partner =
+                std::array::from_fn(|k| (corner[k] - reach * hair * direction[k]).rem_euclid(side));
             let lists = NeighbourList::<3>::build(&pair(partner), &sim_box).unwrap();
-            let listed = |i: usize, j: usize| lists.candidates(i).any(|(k, _)| k == j);
-            assert!(listed(0, 1) && listed(1, 0), "{direction:?}, reach {reach}");
+            let d = sub(&lists.centre.get(0), &lists.centre.get(1));
+            let d = d.map(|x| x - side * (x / side).round());
+            if norm2(&d) < reach * reach {
+                inside += 1;
+                let listed = |i: usize, j: usize| lists.candidates(i).any(|(k, _)| k == j);
+                assert!(listed(0, 1) && listed(1, 0), "{partner:?}, reach {reach}");
+            }
         }
+        assert!(inside > 50, "only {inside} pairs within the reach");
     }
 
     /// Short lists are sorted by counting, a plane's long one by comparison:

@@ -24,42 +24,27 @@ pub(super) fn room_for(mean: f64) -> usize {
     }
 }
 
-/// What a list holds: anything that can stand in for a spill slot's number.
-pub(super) trait Entry: Copy {
-    fn from_slot(slot: u32) -> Self;
-    fn slot(self) -> u32;
-}
-
-impl Entry for u32 {
-    fn from_slot(slot: u32) -> Self {
-        slot
-    }
-    fn slot(self) -> u32 {
-        self
-    }
-}
-
 #[derive(Debug, Clone)]
-pub(super) struct ListStore<T> {
+pub(super) struct ListStore {
     /// List i in line is `inline[i * room..][..len]`.
     room: usize,
     /// Each list's length, with `SPILLED` set if it lives in the spill store.
     len: Vec<u32>,
-    inline: Vec<T>,
+    inline: Vec<u32>,
     /// Slot s is `spill[s * spill_room..]`; `free` holds the slots to reuse.
     spill_room: usize,
-    spill: Vec<T>,
+    spill: Vec<u32>,
     free: Vec<u32>,
 }
 
-impl<T: Entry> ListStore<T> {
+impl ListStore {
     /// `lists` empty lists, each with room for `room` entries in line.
     pub fn new(lists: usize, room: usize) -> Self {
         let room = room.max(1);
         ListStore {
             room,
             len: vec![0; lists],
-            inline: vec![T::from_slot(0); lists * room],
+            inline: vec![0; lists * room],
             spill_room: room + room.div_ceil(2),
             spill: Vec::new(),
             free: Vec::new(),
@@ -77,7 +62,7 @@ impl<T: Entry> ListStore<T> {
     #[inline(always)]
     fn room_of(&self, i: usize, spilled: bool) -> (usize, usize) {
         if spilled {
-            let slot = self.inline[i * self.room].slot() as usize;
+            let slot = self.inline[i * self.room] as usize;
             (slot * self.spill_room, self.spill_room)
         } else {
             (i * self.room, self.room)
@@ -85,7 +70,7 @@ impl<T: Entry> ListStore<T> {
     }
 
     #[inline(always)]
-    pub fn get(&self, i: usize) -> &[T] {
+    pub fn get(&self, i: usize) -> &[u32] {
         let (spilled, n) = self.where_is(i);
         let (at, _) = self.room_of(i, spilled);
         if spilled {
@@ -95,14 +80,8 @@ impl<T: Entry> ListStore<T> {
         }
     }
 
-    /// List i.
-    pub fn get_mut(&mut self, i: usize) -> &mut [T] {
-        let (list, n) = self.room_mut(i);
-        &mut list[..n]
-    }
-
     /// List i's whole room and how much of it the list fills.
-    fn room_mut(&mut self, i: usize) -> (&mut [T], usize) {
+    fn room_mut(&mut self, i: usize) -> (&mut [u32], usize) {
         let (spilled, n) = self.where_is(i);
         let (at, room) = self.room_of(i, spilled);
         let store = if spilled {
@@ -126,7 +105,7 @@ impl<T: Entry> ListStore<T> {
     }
 
     /// List i, with room for one more entry at its end.
-    fn with_room_for_one(&mut self, i: usize) -> (&mut [T], usize) {
+    fn with_room_for_one(&mut self, i: usize) -> (&mut [u32], usize) {
         let (spilled, n) = self.where_is(i);
         if n == self.room_of(i, spilled).1 {
             self.make_room(i, spilled);
@@ -135,7 +114,7 @@ impl<T: Entry> ListStore<T> {
     }
 
     /// Put `e` at the end of list i.
-    pub fn push(&mut self, i: usize, e: T) {
+    pub fn push(&mut self, i: usize, e: u32) {
         let (list, n) = self.with_room_for_one(i);
         list[n] = e;
         self.len[i] += 1;
@@ -151,7 +130,7 @@ impl<T: Entry> ListStore<T> {
 
     /// Take the first entry `is` picks out of list i, if any, keeping the
     /// others in order.
-    pub fn remove(&mut self, i: usize, is: impl Fn(T) -> bool) {
+    pub fn remove(&mut self, i: usize, is: impl Fn(u32) -> bool) {
         let (list, n) = self.room_mut(i);
         if let Some(at) = list[..n].iter().position(|&e| is(e)) {
             // One by one: lists are short, so this beats a call to memmove.
@@ -170,17 +149,17 @@ impl<T: Entry> ListStore<T> {
         if spilled && n < self.room {
             let (from, _) = self.room_of(i, true);
             let at = i * self.room;
-            self.free.push(self.inline[at].slot());
+            self.free.push(self.inline[at]);
             self.inline[at..at + n].copy_from_slice(&self.spill[from..from + n]);
             self.len[i] = n as u32;
         }
     }
 
     /// Make list i `entries`.
-    pub fn set(&mut self, i: usize, entries: &[T]) {
+    pub fn set(&mut self, i: usize, entries: &[u32]) {
         let (spilled, _) = self.where_is(i);
         if spilled {
-            self.free.push(self.inline[i * self.room].slot());
+            self.free.push(self.inline[i * self.room]);
         }
         self.len[i] = 0;
         if entries.len() > self.room {
@@ -215,13 +194,7 @@ impl<T: Entry> ListStore<T> {
             self.spill_room + self.spill_room.div_ceil(2),
         );
         let slots = self.spill.len() / old;
-        widen_rooms(
-            &mut self.spill,
-            slots,
-            |_| old,
-            (old, room),
-            T::from_slot(0),
-        );
+        widen_rooms(&mut self.spill, slots, |_| old, (old, room), 0);
         self.spill_room = room;
     }
 
@@ -242,7 +215,7 @@ impl<T: Entry> ListStore<T> {
                     l => l as usize,
                 },
                 (old, room),
-                T::from_slot(0),
+                0,
             );
             self.room = room;
             if need <= room {
@@ -253,19 +226,18 @@ impl<T: Entry> ListStore<T> {
             self.widen_spill();
         }
         let slot = self.free.pop().unwrap_or_else(|| {
-            self.spill
-                .resize(self.spill.len() + self.spill_room, T::from_slot(0));
+            self.spill.resize(self.spill.len() + self.spill_room, 0);
             slots as u32
         });
         let (at, n) = (i * self.room, self.len[i] as usize);
         let to = slot as usize * self.spill_room;
         self.spill[to..to + n].copy_from_slice(&self.inline[at..at + n]);
-        self.inline[at] = T::from_slot(slot);
+        self.inline[at] = slot;
         self.len[i] = SPILLED | n as u32;
     }
 }
 
-impl ListStore<u32> {
+impl ListStore {
     /// Put `e` into list i, keeping it sorted.
     pub fn insert(&mut self, i: usize, e: u32) {
         // From the end, moving the larger entries up one: lists are short,
@@ -306,11 +278,7 @@ mod tests {
     use rand::{RngExt, SeedableRng};
     use rand_chacha::ChaCha8Rng;
 
-    fn reads_back<T: Entry + PartialEq + std::fmt::Debug>(
-        store: &ListStore<T>,
-        truth: &[Vec<T>],
-        step: u32,
-    ) {
+    fn reads_back(store: &ListStore, truth: &[Vec<u32>], step: u32) {
         for (k, t) in truth.iter().enumerate() {
             assert_eq!(store.get(k), &t[..], "list {k} at step {step}");
         }
@@ -369,34 +337,31 @@ mod tests {
     }
 
     /// Points filed into cells and moved between them as the grid does
-    /// (appended, taken out by moving the last into their place, changed in
-    /// place), against plain vectors doing the same: every cell reads back
-    /// exactly, and the spilled cells that empty come back in line.
+    /// (appended, taken out by moving the last into their place), against
+    /// plain vectors doing the same: every cell reads back exactly, and the
+    /// spilled cells that empty come back in line.
     #[test]
     fn cells_read_back_exactly_in_line_or_spilled() {
         let mut rng = ChaCha8Rng::seed_from_u64(29);
         let (cells, points) = (32, 120);
-        let mut store = ListStore::<(u32, [f32; 2])>::new(cells, 1);
-        let mut truth = vec![Vec::<(u32, [f32; 2])>::new(); cells];
+        let mut store = ListStore::new(cells, 1);
+        let mut truth = vec![Vec::<u32>::new(); cells];
         let mut home = vec![None::<usize>; points];
         let mut spilled_seen = 0;
         for step in 0..40_000u32 {
             let p = rng.random_range(0..points);
             // Crowd the first cells now and then, so that some spill.
             let c = rng.random_range(0..if step % 5000 < 500 { 3 } else { cells });
-            let x = [step as f32, p as f32];
             if let Some(old) = home[p] {
-                let at = truth[old].iter().position(|e| e.0 == p as u32).unwrap();
                 if old == c {
-                    store.get_mut(c)[at].1 = x;
-                    truth[c][at].1 = x;
                     continue;
                 }
+                let at = truth[old].iter().position(|&e| e == p as u32).unwrap();
                 store.swap_remove(old, at);
                 truth[old].swap_remove(at);
             }
-            store.push(c, (p as u32, x));
-            truth[c].push((p as u32, x));
+            store.push(c, p as u32);
+            truth[c].push(p as u32);
             home[p] = Some(c);
             spilled_seen += (store.len[c] & SPILLED != 0) as usize;
             if step % 991 == 0 {
