@@ -27,7 +27,7 @@ use super::{Image, Neighbourhood, PLANE, Persist, image_shift};
 use crate::engine::bodies::Body;
 use crate::engine::boundary::{SimBox, ball_volume};
 use crate::engine::particle::Particle;
-use crate::engine::prefetch::prefetch;
+use crate::engine::prefetch::{pays, prefetch};
 use crate::engine::vector::{Vector, add_scaled, axis0, dot, norm2, sub};
 
 /// A list entry packs a particle index and an image code: `j << 5 | image`.
@@ -231,11 +231,13 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
             if unsorted.len() < room {
                 unsorted.resize(room, 0);
             }
-            // The points' centres are scattered reads: ask for them all
-            // first, so that their misses overlap.
-            for &(_, points) in cells {
-                for &j in points {
-                    prefetch(self.centre.slot(j as usize));
+            // The points' centres are scattered reads in a large system:
+            // ask for them all first, so that their misses overlap.
+            if pays(self.centre.len()) {
+                for &(_, points) in cells {
+                    for &j in points {
+                        prefetch(self.centre.slot(j as usize));
+                    }
                 }
             }
             let mut kept = 0;
