@@ -8,11 +8,9 @@
 //! change a trajectory. It takes a reference, so it only ever names live data.
 
 /// Whether a system of `n` particles has outgrown the caches enough for
-/// asking ahead to pay: measured with spheres at packing 0.45 on a machine
-/// with 1 MiB of L2 per core, predictions asking for their partners'
-/// records cost 1 % at N = 4,000 and save 1 % at 8,788 and 5 % from 16,384
-/// on; a renewal asking for the centres of the points it will test costs
-/// 5 % at packing 0.30, N = 4,000, and saves 15 % at 10^6.
+/// predictions to ask for their partners' records ahead: measured with
+/// spheres at packing 0.45 on a machine with 1 MiB of L2 per core, asking
+/// costs 1 % at N = 4,000 and saves 1 % at 8,788 and 5 % from 16,384 on.
 pub fn pays(n: usize) -> bool {
     n >= 6000
 }

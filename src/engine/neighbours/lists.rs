@@ -27,7 +27,7 @@ use super::{Image, Neighbourhood, PLANE, Persist, image_shift};
 use crate::engine::bodies::Body;
 use crate::engine::boundary::{SimBox, ball_volume};
 use crate::engine::particle::Particle;
-use crate::engine::prefetch::{pays, prefetch};
+use crate::engine::prefetch::prefetch;
 use crate::engine::vector::{Vector, add_scaled, axis0, dot, norm2, sub};
 
 /// A list entry packs a particle index and an image code: `j << 5 | image`.
@@ -44,6 +44,11 @@ fn shell_per_free_path<const D: usize>(density: f64, sigma: f64) -> f64 {
     let packing = std::f64::consts::PI / 6.0 * density * sigma.powi(3);
     1.0 + 0.2 * ((packing - 0.35) / 0.10).clamp(0.0, 1.0)
 }
+
+/// From how many centres a search asks for its points' centres before
+/// testing them: measured, asking costs 6 % with 4,000 spheres (48 kB of
+/// centres, in the caches) and saves 15 % with 10^6 (12 MB).
+const ASK_FOR_CENTRES_FROM: usize = 50_000;
 
 #[inline(always)]
 fn pack(j: usize, image: Image) -> u32 {
@@ -231,9 +236,9 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
             if unsorted.len() < room {
                 unsorted.resize(room, 0);
             }
-            // The points' centres are scattered reads in a large system:
-            // ask for them all first, so that their misses overlap.
-            if pays(self.centre.len()) {
+            // The points' centres are scattered reads once they outgrow the
+            // caches: ask for them all first, so that their misses overlap.
+            if self.centre.len() >= ASK_FOR_CENTRES_FROM {
                 for &(_, points) in cells {
                     for &j in points {
                         prefetch(self.centre.slot(j as usize));
