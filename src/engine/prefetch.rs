@@ -7,14 +7,6 @@
 //! hint: it never faults, changes nothing the program can see, and so cannot
 //! change a trajectory. It takes a reference, so it only ever names live data.
 
-/// Whether a system of `n` particles has outgrown the caches enough for
-/// predictions to ask for their partners' records ahead: measured with
-/// spheres at packing 0.45 on a machine with 1 MiB of L2 per core, asking
-/// costs 1 % at N = 4,000 and saves 1 % at 8,788 and 5 % from 16,384 on.
-pub fn pays(n: usize) -> bool {
-    n >= 6000
-}
-
 /// Ask for the cache lines holding the first and the last byte of `value`
 /// (all of it for a value up to a line and a bit, like a particle record,
 /// which may straddle two lines).

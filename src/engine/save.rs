@@ -280,7 +280,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
             sample_start,
             rng,
             batch: super::contacts::Batch::new(),
-            prefetch_partners: super::prefetch::pays(n),
+            prefetch_partners: super::simulation::worth_prefetching(n),
             counts,
             observer,
         })

@@ -109,7 +109,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             sample_start: 0.0,
             rng: ChaCha8Rng::seed_from_u64(seed),
             batch: Batch::new(),
-            prefetch_partners: super::prefetch::pays(n),
+            prefetch_partners: worth_prefetching(n),
             counts: Counts::default(),
             observer,
         };
@@ -530,6 +530,14 @@ pub fn degrees_of_freedom<const D: usize, P: Borrow<Particle<D>>>(
         sim_box.axes.iter().filter(|a| a.is_periodic()).count()
     };
     free.saturating_sub(conserved) as f64
+}
+
+/// Whether a system of `n` particles has outgrown the caches enough for
+/// predictions to ask for their partners' records ahead: measured with
+/// spheres at packing 0.45 on a machine with 1 MiB of L2 per core, asking
+/// costs 1 % at N = 4,000 and saves 1 % at 8,788 and 5 % from 16,384 on.
+pub(super) fn worth_prefetching(n: usize) -> bool {
+    n >= 6000
 }
 
 /// A collision with j as it is now (its stamp read from `stamps`).

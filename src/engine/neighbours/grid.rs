@@ -4,9 +4,9 @@
 //! across the boundary comes with the image code of the shift that brings it
 //! next to the one asked about.
 //!
-//! The grid keeps no positions: the caller has every point's (its centre)
-//! already, 4 bytes a point here instead of 16 with a copy in single
-//! precision.
+//! The grid keeps no positions: its caller keeps every point's centre
+//! already (4 bytes a point here, instead of 16 with a single-precision
+//! copy of it).
 
 use super::Image;
 use super::store::{ListStore, room_for};
@@ -111,8 +111,7 @@ impl<const D: usize> Grid<D> {
     /// The (up to) 3^D cells around position `x` that may hold a point within
     /// `reach` of it (x itself may be filed there too), into `cells`, and how
     /// many there are: each one's points and the image code they are seen
-    /// through. (Written in place: returned, the array
-    /// would be copied.)
+    /// through. (Written in place: returned, the array would be copied.)
     pub fn cells_around<'a>(
         &'a self,
         x: &Vector<D>,

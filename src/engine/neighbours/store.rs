@@ -235,9 +235,7 @@ impl ListStore {
         self.inline[at] = slot;
         self.len[i] = SPILLED | n as u32;
     }
-}
 
-impl ListStore {
     /// Put `e` into list i, keeping it sorted.
     pub fn insert(&mut self, i: usize, e: u32) {
         // From the end, moving the larger entries up one: lists are short,
