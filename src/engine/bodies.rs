@@ -112,15 +112,14 @@ impl<T> Default for Shared<T> {
 }
 
 impl<T: Copy + PartialEq> Shared<T> {
-    fn refresh(&mut self, values: impl Iterator<Item = T>) {
+    fn refresh(&mut self, values: impl Iterator<Item = T> + Clone) {
         self.values.clear();
-        self.values.extend(values);
-        let first = self.values.first().copied();
-        if self.values.iter().all(|&v| Some(v) == first) {
-            self.values.truncate(1);
-            self.values.shrink_to_fit();
+        let first = values.clone().next();
+        if values.clone().all(|v| Some(v) == first) {
+            self.values.extend(first);
             self.mask = 0;
         } else {
+            self.values.extend(values);
             self.mask = usize::MAX;
         }
     }

@@ -194,7 +194,7 @@ impl ListStore {
             self.spill_room + self.spill_room.div_ceil(2),
         );
         let slots = self.spill.len() / old;
-        widen_rooms(&mut self.spill, slots, |_| old, (old, room), 0);
+        widen_rooms(&mut self.spill, slots, |_| old, (old, room));
         self.spill_room = room;
     }
 
@@ -215,7 +215,6 @@ impl ListStore {
                     l => l as usize,
                 },
                 (old, room),
-                0,
             );
             self.room = room;
             if need <= room {
@@ -254,17 +253,16 @@ impl ListStore {
 /// in room for `old`) room for `new` items, in place: last slot first, each
 /// moving up, so a large block grows without a second copy of it at the
 /// peak, and to exactly that room (a resize alone would round the capacity
-/// up to twice); new places hold `blank`.
-fn widen_rooms<T: Copy>(
-    items: &mut Vec<T>,
+/// up to twice); new places hold 0.
+fn widen_rooms(
+    items: &mut Vec<u32>,
     rooms: usize,
     used: impl Fn(usize) -> usize,
     (old, new): (usize, usize),
-    blank: T,
 ) {
     let len = rooms * new;
     items.reserve_exact(len - items.len());
-    items.resize(len, blank);
+    items.resize(len, 0);
     for k in (0..rooms).rev() {
         items.copy_within(k * old..k * old + used(k), k * new);
     }
