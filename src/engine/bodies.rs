@@ -1,17 +1,16 @@
 //! How the event engine keeps its particles: in two parts, so that what a
 //! prediction reads of a partner is one cache line.
 //!
-//! - A [`Body`] per particle: position, velocity, its time and radius, all
-//!   that a prediction reads; 64 bytes in 3D, side by side from the start
-//!   of a cache line, so that each is one line (a 3D [`Particle`] is 80
-//!   bytes and straddled two lines three times in four). In 2D a body is
-//!   48 bytes and in 1D 32, down from 64 and 48.
-//! - Its inverse mass, which only a collision or a wall asks, and its
-//!   species and shape, which only observers do: arrays beside the bodies
-//!   (12 bytes a particle: 76 in all in 3D, 60 in 2D, 44 in 1D, against
-//!   80, 64 and 48 before), each kept once when every particle shares it
-//!   (a one-species gas: 64 bytes a sphere, and no second line to read
-//!   in a collision).
+//! - A [`Body`] per particle: position, velocity, its time and when its
+//!   next event is due, all that a prediction reads of a partner; 64 bytes
+//!   in 3D, side by side from the start of a cache line, so that each is
+//!   one line (a 3D [`Particle`] is 80 bytes and straddled two lines three
+//!   times in four). In 2D a body is 48 bytes and in 1D 32.
+//! - Its radius, which a prediction adds to its own, its inverse mass, which
+//!   only a collision or a wall asks, and its species and shape, which only
+//!   observers do: arrays beside the bodies, each kept once when every
+//!   particle shares it (a one-species gas: 64 bytes a sphere, and no second
+//!   line to read in a prediction or a collision).
 //!
 //! `bodies[i]` is particle i's body; [`Bodies::get`] and [`Bodies::iter`]
 //! put whole [`Particle`]s together for whoever needs the rest.
@@ -27,7 +26,9 @@ pub struct Body<const D: usize> {
     pub pos: Vector<D>,
     pub vel: Vector<D>,
     pub t: f64,
-    pub radius: f64,
+    /// When its next event is due (a copy of the queue's time, which a
+    /// prediction reads of every partner: in this line, not another).
+    pub due: f64,
 }
 
 impl<const D: usize> Body<D> {
@@ -134,6 +135,7 @@ impl<T: Copy + PartialEq> Shared<T> {
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Bodies<const D: usize> {
     body: Lined<D>,
+    radius: Shared<f64>,
     inv_mass: Shared<f64>,
     kind: Shared<Kind>,
 }
@@ -148,6 +150,7 @@ impl<const D: usize> Bodies<D> {
     /// Take on `particles`, reusing the room already taken.
     pub fn refresh(&mut self, particles: &[Particle<D>]) {
         self.body.zeros(particles.len());
+        self.radius.refresh(particles.iter().map(|p| p.radius));
         self.inv_mass.refresh(particles.iter().map(|p| p.inv_mass));
         self.kind.refresh(particles.iter().map(|p| Kind {
             species: p.species,
@@ -158,7 +161,7 @@ impl<const D: usize> Bodies<D> {
                 pos: p.pos,
                 vel: p.vel,
                 t: p.t,
-                radius: p.radius,
+                due: f64::INFINITY,
             };
         }
     }
@@ -182,6 +185,11 @@ impl<const D: usize> Bodies<D> {
         self.body.as_mut_slice()
     }
 
+    #[inline(always)]
+    pub fn radius(&self, i: usize) -> f64 {
+        self.radius.get(i)
+    }
+
     /// 1/m; 0 for an immovable particle.
     #[inline(always)]
     pub fn inv_mass(&self, i: usize) -> f64 {
@@ -199,7 +207,7 @@ impl<const D: usize> Bodies<D> {
             pos: b.pos,
             vel: b.vel,
             t: b.t,
-            radius: b.radius,
+            radius: self.radius.get(i),
             inv_mass: self.inv_mass.get(i),
             species: k.species,
             shape: k.shape,
@@ -291,8 +299,10 @@ mod tests {
         assert_eq!(bodies.bodies().as_ptr() as usize % 64, 0);
         // One mass and one kind for all: each kept once.
         let gas = Bodies::new(&[ball(1.0, 2.0), ball(2.0, 2.0), ball(3.0, 2.0)]);
-        assert_eq!((gas.inv_mass.values.len(), gas.kind.values.len()), (1, 1));
+        let kept = (gas.radius.values.len(), gas.inv_mass.values.len());
+        assert_eq!((kept, gas.kind.values.len()), ((1, 1), 1));
         assert_eq!(gas.to_vec()[2], ball(3.0, 2.0));
         assert_eq!(bodies.inv_mass.values.len(), 4);
+        assert_eq!(bodies.radius(3), 0.2);
     }
 }

@@ -115,7 +115,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
             }
         }
         self.stamp.iter().for_each(|&s| o.u32(s));
-        self.queue.times().iter().for_each(|&t| o.f64(t));
+        self.queue.times().for_each(|t| o.f64(t));
         o.f64(self.now);
         o.f64(self.origin);
         o.u64(self.rebase_every);
@@ -261,11 +261,15 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
             )));
         }
         let neighbours = N::restore(&particles, &sim_box, &state).map_err(SaveError::Malformed)?;
+        let mut bodies = Bodies::new(&particles);
+        for (b, &t) in bodies.bodies_mut().iter_mut().zip(&times) {
+            b.due = t;
+        }
         Ok(Simulation {
             shifts: (0..images)
                 .map(|c| image_shift(c as u8, &sim_box.size))
                 .collect(),
-            particles: Bodies::new(&particles),
+            particles: bodies,
             sim_box,
             neighbours,
             queue: EventQueue::from_times(times),

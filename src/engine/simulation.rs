@@ -259,7 +259,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 }
                 self.predict(i);
             }
-            Next::Nothing => self.queue.set(i, f64::INFINITY),
+            Next::Nothing => self.schedule(i, f64::INFINITY),
         }
     }
 
@@ -349,6 +349,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     fn predict(&mut self, i: usize) {
         let now = self.now;
         let p = &self.particles[i];
+        let radius = self.particles.radius(i);
         let mut best_t = f64::INFINITY;
         let mut best = Next::Nothing;
         for k in 0..D {
@@ -358,7 +359,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             if let Some((dt, high)) = wall_time(
                 p.pos[k],
                 p.vel[k],
-                p.radius,
+                radius,
                 self.sim_box.size[k],
                 &self.sim_box.axes[k],
             ) {
@@ -375,10 +376,10 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         // Partners' records and scheduled times lie scattered in memory: ask
         // for all of them first, so that their cache misses overlap.
         if self.prefetch_partners {
-            let due = self.queue.times();
+            self.queue.prefetch(i);
             for (j, _) in self.neighbours.candidates(i) {
                 prefetch(&self.particles[j]);
-                prefetch(&due[j]);
+                prefetch(&self.stamp[j]);
             }
         }
         let x_i = p.position_at(now);
@@ -390,7 +391,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                     gap,
                     p.vel[0] - q.vel[0],
                     line_side(i, j, image),
-                    p.radius + q.radius,
+                    radius + self.particles.radius(j),
                 );
                 if let Some(t) = dt.map(|dt| now + dt)
                     && t < best_t
@@ -402,11 +403,8 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         } else {
             // Everything the gather reads, as plain slices: their lengths and
             // addresses stay in registers while the batch is written.
-            let (particles, shifts, due) = (
-                self.particles.bodies(),
-                &self.shifts[..],
-                self.queue.times(),
-            );
+            let (bodies, shifts) = (&self.particles, &self.shifts[..]);
+            let particles = bodies.bodies();
             let batch = &mut self.batch;
             let mut candidates = self.neighbours.candidates(i);
             loop {
@@ -422,7 +420,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                     } else {
                         v
                     };
-                    batch.put(m, (j, image), &r, &v, p.radius + q.radius, due[j]);
+                    batch.put(m, (j, image), &r, &v, radius + bodies.radius(j), q.due);
                     m += 1;
                 }
                 if m > 0
@@ -450,7 +448,15 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             }
         }
         self.next[i] = Packed::pack(best);
-        self.queue.set(i, best_t);
+        self.schedule(i, best_t);
+    }
+
+    /// Put i's next event at time t in the queue, and in i's body, where a
+    /// prediction reads it for every partner.
+    #[inline(always)]
+    fn schedule(&mut self, i: usize, t: f64) {
+        self.particles[i].due = t;
+        self.queue.set(i, t);
     }
 
     /// Move the time origin to now: every particle is brought to the present
@@ -460,6 +466,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         for p in self.particles.bodies_mut() {
             p.advance_to(now);
             p.t = 0.0;
+            p.due -= now;
         }
         self.queue.rebase(now);
         self.origin += now;
@@ -477,7 +484,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 let q = &self.particles[j];
                 let x_j = q.position_at(self.now);
                 let r = separation(&x_i, &x_j, image, &self.shifts, N::PLANES);
-                let sigma = p.radius + q.radius;
+                let sigma = self.particles.radius(i) + self.particles.radius(j);
                 if sigma > 0.0 {
                     worst = worst.max(1.0 - dot(&r, &r).sqrt() / sigma);
                 }
@@ -491,11 +498,12 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         let mut worst: f64 = 0.0;
         for (i, p) in self.particles.bodies().iter().enumerate() {
             let x = p.position_at(self.now);
+            let radius = self.particles.radius(i);
             // A plane spans every axis but 0.
             for k in 0..if self.particles.is_plane(i) { 1 } else { D } {
                 if !self.sim_box.axes[k].is_periodic() {
-                    let out = (p.radius - x[k]).max(x[k] + p.radius - self.sim_box.size[k]);
-                    worst = worst.max(out / (2.0 * p.radius).max(1e-300));
+                    let out = (radius - x[k]).max(x[k] + radius - self.sim_box.size[k]);
+                    worst = worst.max(out / (2.0 * radius).max(1e-300));
                 }
             }
         }
