@@ -44,6 +44,13 @@ struct Entry {
     particle: u32,
 }
 
+impl Entry {
+    #[inline(always)]
+    fn before(&self, other: &Entry) -> bool {
+        self.time < other.time || (self.time == other.time && self.particle < other.particle)
+    }
+}
+
 /// Particle i's event and its place in the calendar, in one 16-byte
 /// record: rescheduling reads and writes one line of it, not four.
 #[derive(Debug, Clone, Copy)]
@@ -52,13 +59,7 @@ struct Record {
     next: u32,
     prev: u32,
 }
-
-impl Entry {
-    #[inline(always)]
-    fn before(&self, other: &Entry) -> bool {
-        self.time < other.time || (self.time == other.time && self.particle < other.particle)
-    }
-}
+const _: () = assert!(std::mem::size_of::<Record>() == 16);
 
 #[derive(Debug, Clone)]
 pub struct EventQueue {
