@@ -373,8 +373,9 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 }
             }
         }
-        // Partners' records and scheduled times lie scattered in memory: ask
-        // for all of them first, so that their cache misses overlap.
+        // Partners' bodies and stamps, and this particle's calendar record,
+        // lie scattered in memory: ask for all of them first, so that their
+        // cache misses overlap.
         if self.prefetch_partners {
             self.queue.prefetch(i);
             for (j, _) in self.neighbours.candidates(i) {
