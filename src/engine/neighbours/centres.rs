@@ -1,16 +1,23 @@
 //! Each particle's centre (where its list was last renewed) in 32-bit fixed
-//! point across the box: 12 bytes a sphere instead of 24.
+//! point: per axis, the index of its cell in the grid, then `FINE` bits for
+//! where in that cell. 12 bytes a sphere instead of 24, and the grid keeps
+//! the fine bits of each point beside its index, so a search measures the
+//! distance to every point of a cell from the cell alone, exactly, in
+//! integers (see `grid.rs`).
 //!
 //! A centre is only a reference point, so rounding it costs no exactness:
 //! a neighbourhood is drawn around the stored centre, and a particle renews
 //! when it has moved a shell from that, wherever it stood when it renewed.
-//! The rounding only moves the start a box's length / 2^33 off the stored
-//! centre, nothing against a shell.
+//! The rounding only moves the start half a step (a cell's width / 2^13)
+//! off the stored centre: a few thousandths of a diameter, nothing against
+//! a shell.
 
 use crate::engine::vector::Vector;
 
-/// Steps across the box per axis.
-const STEPS: f64 = 4_294_967_296.0;
+/// Bits of a centre's coordinate for where it is within its cell.
+pub const FINE: u32 = 12;
+/// Cells per axis that a coordinate can count.
+pub const MAX_CELLS: u32 = 1 << (32 - FINE);
 
 #[derive(Debug, Clone)]
 pub struct Centres<const D: usize> {
@@ -18,15 +25,20 @@ pub struct Centres<const D: usize> {
     /// A step's length per axis, and its inverse.
     step: Vector<D>,
     per_step: Vector<D>,
+    /// The last step per axis.
+    last: [u32; D],
 }
 
 impl<const D: usize> Centres<D> {
-    /// The centres nearest to `points`, in a box of `size`.
-    pub fn new(size: &Vector<D>, points: impl Iterator<Item = Vector<D>>) -> Self {
+    /// The centres nearest to `points`, in a box of `size` cut into `cells`
+    /// cells per axis (at most `MAX_CELLS`).
+    pub fn new(size: &Vector<D>, cells: [u32; D], points: impl Iterator<Item = Vector<D>>) -> Self {
+        let steps: [f64; D] = std::array::from_fn(|k| ((cells[k] as u64) << FINE) as f64);
         let mut centres = Centres {
             at: Vec::new(),
-            step: size.map(|l| l / STEPS),
-            per_step: size.map(|l| STEPS / l),
+            step: std::array::from_fn(|k| size[k] / steps[k]),
+            per_step: std::array::from_fn(|k| steps[k] / size[k]),
+            last: std::array::from_fn(|k| ((cells[k] as u64) << FINE) as u32 - 1),
         };
         centres.at = points.map(|x| centres.nearest(&x)).collect();
         centres
@@ -36,20 +48,32 @@ impl<const D: usize> Centres<D> {
         self.at.len()
     }
 
-    /// The step nearest to x on each axis (a point a hair outside the box,
-    /// by round-off at a wall, takes the box's edge).
+    /// The step holding x on each axis (a point a hair outside the box, by
+    /// round-off at a wall, takes the step at the box's edge).
     fn nearest(&self, x: &Vector<D>) -> [u32; D] {
         std::array::from_fn(|k| {
             (x[k] * self.per_step[k])
-                .round()
-                .clamp(0.0, u32::MAX as f64) as u32
+                .floor()
+                .clamp(0.0, self.last[k] as f64) as u32
         })
     }
 
+    /// i's centre: the middle of its step on each axis.
     #[inline(always)]
     pub fn get(&self, i: usize) -> Vector<D> {
         let at = &self.at[i];
-        std::array::from_fn(|k| at[k] as f64 * self.step[k])
+        std::array::from_fn(|k| (at[k] as f64 + 0.5) * self.step[k])
+    }
+
+    /// i's centre as it is kept: steps from the origin, per axis.
+    #[inline(always)]
+    pub fn steps(&self, i: usize) -> [u32; D] {
+        self.at[i]
+    }
+
+    /// A step's length per axis.
+    pub fn step(&self) -> &Vector<D> {
+        &self.step
     }
 
     /// Make i's centre the one nearest to x, and return it.
@@ -80,7 +104,7 @@ mod tests {
         use rand::{RngExt, SeedableRng};
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
         let size = [120.4, 3.0, 7e5];
-        let mut centres = Centres::new(&size, std::iter::empty());
+        let mut centres = Centres::new(&size, [40, 1, MAX_CELLS], std::iter::empty());
         centres.at.push([0; 3]);
         for _ in 0..10_000 {
             let x: Vector<3> = std::array::from_fn(|k| rng.random_range(0.0..size[k]));

@@ -21,9 +21,9 @@
 //! compiled into the event loop.
 
 use super::centres::Centres;
-use super::grid::Grid;
+use super::grid::{Grid, Near, fine, index};
 use super::store::{ListStore, room_for};
-use super::{Image, Neighbourhood, PLANE, Persist, image_shift};
+use super::{Image, Neighbourhood, PLANE, Persist};
 use crate::engine::bodies::Body;
 use crate::engine::boundary::{SimBox, ball_volume};
 use crate::engine::particle::Particle;
@@ -44,11 +44,6 @@ fn shell_per_free_path<const D: usize>(density: f64, sigma: f64) -> f64 {
     let packing = std::f64::consts::PI / 6.0 * density * sigma.powi(3);
     1.0 + 0.2 * ((packing - 0.35) / 0.10).clamp(0.0, 1.0)
 }
-
-/// From how many centres a search asks for its points' centres before
-/// testing them: measured, asking costs 6 % with 4,000 spheres (48 kB of
-/// centres, in the caches) and saves 15 % with 10^6 (12 MB).
-const ASK_FOR_CENTRES_FROM: usize = 50_000;
 
 #[inline(always)]
 fn pack(j: usize, image: Image) -> u32 {
@@ -97,7 +92,6 @@ pub struct NeighbourList<const D: usize, const PLANES: bool = false> {
     shell: f64,
     size: Vector<D>,
     periodic: [bool; D],
-    shifts: Vec<Vector<D>>,
     /// How far apart two centres may be for a pair to count as neighbours:
     /// twice the largest radius and the shell, the same for every pair so
     /// that lists stay symmetric (`plane_reach` for a pair with the plane).
@@ -228,32 +222,27 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
             // Widened by the round-off, the reach can never miss a point.
             let reach = self.reach + self.grid.rounding();
             let reach2 = reach * reach;
-            let mut cells = [(0, &[][..]); 27];
-            let count = self.grid.cells_around(c, reach, &mut cells);
-            let cells = &cells[..count];
-            // Room for every point and the plane.
-            let room = cells.iter().map(|(_, points)| points.len()).sum::<usize>() + 1;
-            if unsorted.len() < room {
-                unsorted.resize(room, 0);
-            }
-            // The points' centres are scattered reads once they outgrow the
-            // caches: ask for them all first, so that their misses overlap.
-            if self.centre.len() >= ASK_FOR_CENTRES_FROM {
-                for &(_, points) in cells {
-                    for &j in points {
-                        prefetch(self.centre.slot(j as usize));
-                    }
-                }
-            }
+            let mut near = [Near::default(); 27];
+            let steps = self.centre.steps(i);
+            let count = self.grid.cells_around(&steps, c, reach, &mut near);
+            // A point's offset from the centre, in steps, is exact in
+            // integers: the same, but for its sign, seen from either end, so
+            // a pair is in both lists or in neither.
+            let step = self.centre.step();
             let mut kept = 0;
-            for &(image, points) in cells {
-                // Where i's centre is, seen from the points of this image.
-                let s = &self.shifts[image as usize];
-                let from: Vector<D> = std::array::from_fn(|k| c[k] - s[k]);
-                for &j in points {
-                    let r = sub(&self.centre.get(j as usize), &from);
-                    unsorted[kept] = pack(j as usize, image);
-                    kept += ((j as usize != i) & (norm2(&r) < reach2)) as usize;
+            for cell in &near[..count] {
+                let points = self.grid.points(cell);
+                // Room for every point so far and the plane.
+                if unsorted.len() <= kept + points.len() {
+                    unsorted.resize(kept + points.len() + 1, 0);
+                }
+                let from: [i32; D] = std::array::from_fn(|k| cell.from(k));
+                for &e in points {
+                    let j = index(e);
+                    let r: Vector<D> =
+                        std::array::from_fn(|k| (from[k] + fine(e, k)) as f64 * step[k]);
+                    unsorted[kept] = pack(j, cell.image);
+                    kept += ((j != i) & (norm2(&r) < reach2)) as usize;
                 }
             }
             if let Some(k) = self.plane.filter(|_| PLANES)
@@ -333,9 +322,10 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
     fn list_all(&mut self) {
         self.lists.clear();
         self.plane_list.clear();
-        for (i, c) in self.centre.iter().enumerate() {
+        self.grid.clear();
+        for i in 0..self.centre.len() {
             if Some(i) != self.plane {
-                self.grid.place(i, &c);
+                self.grid.place(i, &self.centre.steps(i), None);
             }
         }
         let [mut buf, mut unsorted] = std::mem::take(&mut self.scratch);
@@ -381,17 +371,19 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
             .fold(0.0, f64::max);
         let n = particles.len();
         let reach = 2.0 * (largest_radius + shell);
+        let grid = Grid::new(n, reach, sim_box);
         let mut lists = NeighbourList {
             shell,
             size: sim_box.size,
             periodic: std::array::from_fn(|k| sim_box.axes[k].is_periodic()),
-            shifts: (0..3u32.pow(D as u32))
-                .map(|c| image_shift(c as Image, &sim_box.size))
-                .collect(),
             reach,
             plane_reach: plane.map_or(0.0, |k| particles[k].radius) + largest_radius + 2.0 * shell,
-            centre: Centres::new(&sim_box.size, particles.iter().map(|p| p.pos)),
-            grid: Grid::new(n, reach, sim_box),
+            centre: Centres::new(
+                &sim_box.size,
+                grid.cells_per_axis(),
+                particles.iter().map(|p| p.pos),
+            ),
+            grid,
             // Room for the mean list of particles spread evenly over the box
             // (an ideal gas: a fluid's lists are a little shorter).
             lists: ListStore::new(
@@ -469,11 +461,14 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
                 wrapped = true;
             }
         }
-        let centre = self.centre.set(i, &p.pos);
-        if Some(i) != self.plane {
-            self.grid.place(i, &centre);
-        }
+        let was = self.centre.steps(i);
+        self.centre.set(i, &p.pos);
         self.relist(i);
+        // Filed after the search (which passes over i wherever it is filed),
+        // which has brought the cells it leaves and enters into the cache.
+        if Some(i) != self.plane {
+            self.grid.place(i, &self.centre.steps(i), Some(&was));
+        }
         wrapped
     }
 }

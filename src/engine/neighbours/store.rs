@@ -6,7 +6,8 @@
 //! the mean, and a list that outgrows it moves, whole, to a slot of a spill
 //! store, where it stays until it is set anew or is short again; its slot's
 //! number takes the place of its first entry in line. A list is always one
-//! contiguous slice, wherever it lives.
+//! contiguous slice, wherever it lives. An entry is a word: a neighbour
+//! list's a `u32`, a cell's a `u64` (a point and where it is in the cell).
 
 use crate::engine::prefetch::prefetch;
 
@@ -24,27 +25,51 @@ pub(super) fn room_for(mean: f64) -> usize {
     }
 }
 
+/// What a store holds: a word, which can also hold a spill slot's number.
+pub(super) trait Entry: Copy + Default {
+    fn from_slot(slot: u32) -> Self;
+    fn slot(self) -> u32;
+}
+
+impl Entry for u32 {
+    fn from_slot(slot: u32) -> Self {
+        slot
+    }
+    fn slot(self) -> u32 {
+        self
+    }
+}
+
+impl Entry for u64 {
+    fn from_slot(slot: u32) -> Self {
+        slot as u64
+    }
+    fn slot(self) -> u32 {
+        self as u32
+    }
+}
+
 #[derive(Debug, Clone)]
-pub(super) struct ListStore {
+pub(super) struct ListStore<T = u32> {
     /// List i in line is `inline[i * room..][..len]`.
     room: usize,
     /// Each list's length, with `SPILLED` set if it lives in the spill store.
     len: Vec<u32>,
-    inline: Vec<u32>,
+    inline: Vec<T>,
     /// Slot s is `spill[s * spill_room..]`; `free` holds the slots to reuse.
     spill_room: usize,
-    spill: Vec<u32>,
+    spill: Vec<T>,
     free: Vec<u32>,
 }
 
-impl ListStore {
+impl<T: Entry> ListStore<T> {
     /// `lists` empty lists, each with room for `room` entries in line.
     pub fn new(lists: usize, room: usize) -> Self {
         let room = room.max(1);
         ListStore {
             room,
             len: vec![0; lists],
-            inline: vec![0; lists * room],
+            inline: vec![T::default(); lists * room],
             spill_room: room + room.div_ceil(2),
             spill: Vec::new(),
             free: Vec::new(),
@@ -62,7 +87,7 @@ impl ListStore {
     #[inline(always)]
     fn room_of(&self, i: usize, spilled: bool) -> (usize, usize) {
         if spilled {
-            let slot = self.inline[i * self.room] as usize;
+            let slot = self.inline[i * self.room].slot() as usize;
             (slot * self.spill_room, self.spill_room)
         } else {
             (i * self.room, self.room)
@@ -70,7 +95,7 @@ impl ListStore {
     }
 
     #[inline(always)]
-    pub fn get(&self, i: usize) -> &[u32] {
+    pub fn get(&self, i: usize) -> &[T] {
         let (spilled, n) = self.where_is(i);
         let (at, _) = self.room_of(i, spilled);
         if spilled {
@@ -81,7 +106,7 @@ impl ListStore {
     }
 
     /// List i's whole room and how much of it the list fills.
-    fn room_mut(&mut self, i: usize) -> (&mut [u32], usize) {
+    fn room_mut(&mut self, i: usize) -> (&mut [T], usize) {
         let (spilled, n) = self.where_is(i);
         let (at, room) = self.room_of(i, spilled);
         let store = if spilled {
@@ -105,7 +130,7 @@ impl ListStore {
     }
 
     /// List i, with room for one more entry at its end.
-    fn with_room_for_one(&mut self, i: usize) -> (&mut [u32], usize) {
+    fn with_room_for_one(&mut self, i: usize) -> (&mut [T], usize) {
         let (spilled, n) = self.where_is(i);
         if n == self.room_of(i, spilled).1 {
             self.make_room(i, spilled);
@@ -114,10 +139,16 @@ impl ListStore {
     }
 
     /// Put `e` at the end of list i.
-    pub fn push(&mut self, i: usize, e: u32) {
+    pub fn push(&mut self, i: usize, e: T) {
         let (list, n) = self.with_room_for_one(i);
         list[n] = e;
         self.len[i] += 1;
+    }
+
+    /// Make entry `at` of list i `e`.
+    pub fn replace(&mut self, i: usize, at: usize, e: T) {
+        let (list, n) = self.room_mut(i);
+        list[..n][at] = e;
     }
 
     /// Take entry `at` out of list i, moving its last entry into its place.
@@ -128,20 +159,6 @@ impl ListStore {
         self.settle(i);
     }
 
-    /// Take the first entry `is` picks out of list i, if any, keeping the
-    /// others in order.
-    pub fn remove(&mut self, i: usize, is: impl Fn(u32) -> bool) {
-        let (list, n) = self.room_mut(i);
-        if let Some(at) = list[..n].iter().position(|&e| is(e)) {
-            // One by one: lists are short, so this beats a call to memmove.
-            for k in at..n - 1 {
-                list[k] = list[k + 1];
-            }
-            self.len[i] -= 1;
-            self.settle(i);
-        }
-    }
-
     /// A spilled list that fits in line again, with one place to spare (so
     /// that a list at the edge does not go back and forth), comes back.
     fn settle(&mut self, i: usize) {
@@ -149,17 +166,17 @@ impl ListStore {
         if spilled && n < self.room {
             let (from, _) = self.room_of(i, true);
             let at = i * self.room;
-            self.free.push(self.inline[at]);
+            self.free.push(self.inline[at].slot());
             self.inline[at..at + n].copy_from_slice(&self.spill[from..from + n]);
             self.len[i] = n as u32;
         }
     }
 
     /// Make list i `entries`.
-    pub fn set(&mut self, i: usize, entries: &[u32]) {
+    pub fn set(&mut self, i: usize, entries: &[T]) {
         let (spilled, _) = self.where_is(i);
         if spilled {
-            self.free.push(self.inline[i * self.room]);
+            self.free.push(self.inline[i * self.room].slot());
         }
         self.len[i] = 0;
         if entries.len() > self.room {
@@ -225,14 +242,32 @@ impl ListStore {
             self.widen_spill();
         }
         let slot = self.free.pop().unwrap_or_else(|| {
-            self.spill.resize(self.spill.len() + self.spill_room, 0);
+            self.spill
+                .resize(self.spill.len() + self.spill_room, T::default());
             slots as u32
         });
         let (at, n) = (i * self.room, self.len[i] as usize);
         let to = slot as usize * self.spill_room;
         self.spill[to..to + n].copy_from_slice(&self.inline[at..at + n]);
-        self.inline[at] = slot;
+        self.inline[at] = T::from_slot(slot);
         self.len[i] = SPILLED | n as u32;
+    }
+}
+
+/// Sorted lists (the neighbour lists).
+impl ListStore<u32> {
+    /// Take the first entry `is` picks out of list i, if any, keeping the
+    /// others in order.
+    pub fn remove(&mut self, i: usize, is: impl Fn(u32) -> bool) {
+        let (list, n) = self.room_mut(i);
+        if let Some(at) = list[..n].iter().position(|&e| is(e)) {
+            // One by one: lists are short, so this beats a call to memmove.
+            for k in at..n - 1 {
+                list[k] = list[k + 1];
+            }
+            self.len[i] -= 1;
+            self.settle(i);
+        }
     }
 
     /// Put `e` into list i, keeping it sorted.
@@ -254,15 +289,15 @@ impl ListStore {
 /// moving up, so a large block grows without a second copy of it at the
 /// peak, and to exactly that room (a resize alone would round the capacity
 /// up to twice); new places hold 0.
-fn widen_rooms(
-    items: &mut Vec<u32>,
+fn widen_rooms<T: Entry>(
+    items: &mut Vec<T>,
     rooms: usize,
     used: impl Fn(usize) -> usize,
     (old, new): (usize, usize),
 ) {
     let len = rooms * new;
     items.reserve_exact(len - items.len());
-    items.resize(len, 0);
+    items.resize(len, T::default());
     for k in (0..rooms).rev() {
         items.copy_within(k * old..k * old + used(k), k * new);
     }
@@ -274,7 +309,11 @@ mod tests {
     use rand::{RngExt, SeedableRng};
     use rand_chacha::ChaCha8Rng;
 
-    fn reads_back(store: &ListStore, truth: &[Vec<u32>], step: u32) {
+    fn reads_back<T: Entry + PartialEq + std::fmt::Debug>(
+        store: &ListStore<T>,
+        truth: &[Vec<T>],
+        step: u32,
+    ) {
         for (k, t) in truth.iter().enumerate() {
             assert_eq!(store.get(k), &t[..], "list {k} at step {step}");
         }
@@ -340,8 +379,8 @@ mod tests {
     fn cells_read_back_exactly_in_line_or_spilled() {
         let mut rng = ChaCha8Rng::seed_from_u64(29);
         let (cells, points) = (32, 120);
-        let mut store = ListStore::new(cells, 1);
-        let mut truth = vec![Vec::<u32>::new(); cells];
+        let mut store = ListStore::<u64>::new(cells, 1);
+        let mut truth = vec![Vec::<u64>::new(); cells];
         let mut home = vec![None::<usize>; points];
         let mut spilled_seen = 0;
         for step in 0..40_000u32 {
@@ -352,12 +391,17 @@ mod tests {
                 if old == c {
                     continue;
                 }
-                let at = truth[old].iter().position(|&e| e == p as u32).unwrap();
+                let at = truth[old]
+                    .iter()
+                    .position(|&e| e as u32 == p as u32)
+                    .unwrap();
                 store.swap_remove(old, at);
                 truth[old].swap_remove(at);
             }
-            store.push(c, p as u32);
-            truth[c].push(p as u32);
+            // A cell's entry: the point, and above it where it is (here, when).
+            let e = p as u64 | (step as u64) << 32;
+            store.push(c, e);
+            truth[c].push(e);
             home[p] = Some(c);
             spilled_seen += (store.len[c] & SPILLED != 0) as usize;
             if step % 991 == 0 {
