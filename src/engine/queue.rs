@@ -128,6 +128,17 @@ impl EventQueue {
         self.heap.first().map(|e| (e.particle as usize, e.time))
     }
 
+    /// The particle whose event comes after the earliest, if it is in the
+    /// current bucket too (a hint: the one to ask ahead for).
+    #[inline(always)]
+    pub fn peek_second(&self) -> Option<usize> {
+        match self.heap.get(1..3) {
+            Some([a, b]) => Some(if b.before(a) { b } else { a }),
+            _ => self.heap.get(1),
+        }
+        .map(|e| e.particle as usize)
+    }
+
     /// Start loading what rescheduling i will read (a hint).
     #[inline(always)]
     pub fn prefetch(&self, i: usize) {

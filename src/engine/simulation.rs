@@ -186,6 +186,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             Stop::Time(t) => t,
             Stop::Collisions(_) => f64::INFINITY,
         };
+        let ask_ahead = worth_asking_ahead(self.particles.len());
         loop {
             // Relative to the current origin, which a rebase moves.
             let end_time = end_absolute - self.origin;
@@ -204,10 +205,13 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             self.handle(i);
             // The next event is almost always the queue's front now: start
             // loading what it will read while this loop iteration finishes.
-            if let Some((i, _)) = self.queue.peek() {
+            if let Some((i, t)) = self.queue.peek() {
                 prefetch(&self.next[i]);
                 prefetch(&self.particles[i]);
                 self.neighbours.prefetch(i);
+                if ask_ahead {
+                    self.ask_ahead(i, t);
+                }
             }
             self.events_since_rebase += 1;
             if self.events_since_rebase >= self.rebase_every {
@@ -235,6 +239,29 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             sim_box: &self.sim_box,
         };
         self.observer.sample(&snapshot);
+    }
+
+    /// In a system far larger than the caches, a pipeline one event deep: for
+    /// the next event (particle i at time t, whose own records were asked
+    /// for an event ago) ask for what its second stage will read, its
+    /// partner or the cells of its renewal; for the one after it, its
+    /// records.
+    fn ask_ahead(&self, i: usize, t: f64) {
+        match self.next[i].unpack() {
+            Next::Pair { j, .. } => {
+                let j = j as usize;
+                prefetch(&self.stamp[j]);
+                prefetch(&self.particles[j]);
+                self.neighbours.prefetch(j);
+            }
+            Next::Renew => self.neighbours.prefetch_renewal(i, &self.particles[i], t),
+            _ => {}
+        }
+        if let Some(k) = self.queue.peek_second() {
+            prefetch(&self.next[k]);
+            prefetch(&self.particles[k]);
+            self.neighbours.prefetch(k);
+        }
     }
 
     /// Apply particle i's scheduled event, which is due now.
@@ -547,6 +574,14 @@ pub fn degrees_of_freedom<const D: usize, P: Borrow<Particle<D>>>(
 /// costs 1 % at N = 4,000 and saves 1 % at 8,788 and 5 % from 16,384 on.
 pub(super) fn worth_prefetching(n: usize) -> bool {
     n >= 6000
+}
+
+/// Whether a system of `n` particles is large enough for the event loop to
+/// ask one event ahead (`ask_ahead`): measured with spheres at packing 0.30,
+/// it saves 5 % at N = 10^6, is flat at 256,000 and costs up to 5 % at
+/// 32,000, whose state fits in this machine's 32 MiB of L3.
+fn worth_asking_ahead(n: usize) -> bool {
+    n >= 500_000
 }
 
 /// A collision with j as it is now (its stamp read from `stamps`).

@@ -50,7 +50,7 @@ impl<const D: usize> Centres<D> {
 
     /// The step holding x on each axis (a point a hair outside the box, by
     /// round-off at a wall, takes the step at the box's edge).
-    fn nearest(&self, x: &Vector<D>) -> [u32; D] {
+    pub fn nearest(&self, x: &Vector<D>) -> [u32; D] {
         std::array::from_fn(|k| {
             (x[k] * self.per_step[k])
                 .floor()

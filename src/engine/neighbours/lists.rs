@@ -416,6 +416,25 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
         prefetch(self.centre.slot(i));
     }
 
+    /// The cells around where p will renew at t.
+    #[inline]
+    fn prefetch_renewal(&self, i: usize, p: &Body<D>, t: f64) {
+        if PLANES && Some(i) == self.plane {
+            return;
+        }
+        let x: Vector<D> = std::array::from_fn(|k| {
+            let x = p.pos[k] + (t - p.t) * p.vel[k];
+            if self.periodic[k] {
+                x.rem_euclid(self.size[k])
+            } else {
+                x
+            }
+        });
+        let mut near = [Near::default(); 27];
+        self.grid
+            .cells_around(&self.centre.nearest(&x), &x, self.reach, &mut near);
+    }
+
     /// When p (particle i) reaches the edge of its neighbourhood.
     #[inline]
     fn next_renewal(&self, i: usize, p: &Body<D>) -> Option<f64> {
