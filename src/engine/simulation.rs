@@ -243,9 +243,9 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
 
     /// In a system far larger than the caches, a pipeline one event deep: for
     /// the next event (particle i at time t, whose own records were asked
-    /// for an event ago) ask for what its second stage will read, its
-    /// partner or the cells of its renewal; for the one after it, its
-    /// records.
+    /// for an event ago) ask for what its second stage will read (its
+    /// partner's records and its own partners' bodies, or the cells of its
+    /// renewal); for the one after it, its records.
     fn ask_ahead(&self, i: usize, t: f64) {
         match self.next[i].unpack() {
             Next::Pair { j, .. } => {
@@ -253,6 +253,9 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 prefetch(&self.stamp[j]);
                 prefetch(&self.particles[j]);
                 self.neighbours.prefetch(j);
+                for (k, _) in self.neighbours.candidates(i) {
+                    prefetch(&self.particles[k]);
+                }
             }
             Next::Renew => self.neighbours.prefetch_renewal(i, &self.particles[i], t),
             _ => {}
