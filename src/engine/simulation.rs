@@ -581,7 +581,8 @@ pub(super) fn worth_prefetching(n: usize) -> bool {
 
 /// Whether a system of `n` particles is large enough for the event loop to
 /// ask one event ahead (`ask_ahead`): measured with spheres at packing 0.30,
-/// it saves 5 % at N = 10^6, is flat at 256,000 and costs up to 5 % at
+/// it saves about 10 % at N = 10^6, but asking for the next renewal's cells
+/// and the partner's records alone was flat at 256,000 and cost up to 5 % at
 /// 32,000, whose state fits in this machine's 32 MiB of L3.
 fn worth_asking_ahead(n: usize) -> bool {
     n >= 500_000

@@ -288,7 +288,7 @@ impl ListStore<u32> {
 /// in room for `old`) room for `new` items, in place: last slot first, each
 /// moving up, so a large block grows without a second copy of it at the
 /// peak, and to exactly that room (a resize alone would round the capacity
-/// up to twice); new places hold 0.
+/// up to twice); new places hold the default entry.
 fn widen_rooms<T: Entry>(
     items: &mut Vec<T>,
     rooms: usize,
