@@ -38,7 +38,7 @@ impl<const D: usize> Centres<D> {
             at: Vec::new(),
             step: std::array::from_fn(|k| size[k] / steps[k]),
             per_step: std::array::from_fn(|k| steps[k] / size[k]),
-            last: std::array::from_fn(|k| ((cells[k] as u64) << FINE) as u32 - 1),
+            last: std::array::from_fn(|k| (((cells[k] as u64) << FINE) - 1) as u32),
         };
         centres.at = points.map(|x| centres.nearest(&x)).collect();
         centres
