@@ -34,11 +34,11 @@ pub fn fine(e: Point, k: usize) -> i32 {
     ((e >> (INDEX_BITS + FINE * k as u32)) & ((1 << FINE) - 1)) as i32
 }
 
-/// A cell found by a search: which, the image its points are seen through,
-/// and per axis its corner's offset in steps from the centre searched
-/// around (image shift included: a point's offset is this and its fine
-/// bits), packed 16 bits an axis, each biased to be positive, so that the
-/// axes' parts of a cell's offset add up without carries.
+/// A cell found by a search: its index, the image its points are seen
+/// through, and per axis its corner's offset in steps from the centre
+/// searched around (image shift included: a point's offset is this plus its
+/// fine bits), packed 16 bits an axis, each biased to be positive, so that
+/// the axes' parts of a cell's offset add up without carries.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Near {
     cell: usize,
