@@ -16,6 +16,8 @@ use crate::engine::vector::Vector;
 
 /// Bits of a centre's coordinate for where it is within its cell.
 pub const FINE: u32 = 12;
+/// Those bits of a coordinate.
+pub const WITHIN: u32 = (1 << FINE) - 1;
 /// Cells per axis that a coordinate can count.
 pub const MAX_CELLS: u32 = 1 << (32 - FINE);
 
@@ -67,8 +69,8 @@ impl<const D: usize> Centres<D> {
 
     /// i's centre as it is kept: steps from the origin, per axis.
     #[inline(always)]
-    pub fn steps(&self, i: usize) -> [u32; D] {
-        self.at[i]
+    pub fn steps(&self, i: usize) -> &[u32; D] {
+        &self.at[i]
     }
 
     /// A step's length per axis.
@@ -84,11 +86,6 @@ impl<const D: usize> Centres<D> {
 
     pub fn iter(&self) -> impl Iterator<Item = Vector<D>> + '_ {
         (0..self.at.len()).map(|i| self.get(i))
-    }
-
-    /// Where i's centre is kept (for a prefetch hint).
-    pub fn slot(&self, i: usize) -> &[u32; D] {
-        &self.at[i]
     }
 }
 

@@ -11,7 +11,7 @@
 //! nothing per point.
 
 use super::Image;
-use super::centres::{FINE, MAX_CELLS};
+use super::centres::{FINE, MAX_CELLS, WITHIN};
 use super::store::{ListStore, room_for};
 use crate::engine::boundary::SimBox;
 use crate::engine::vector::{Vector, norm2};
@@ -31,7 +31,7 @@ pub fn index(e: Point) -> usize {
 /// Where a filed point is within its cell along axis k, in steps.
 #[inline(always)]
 pub fn fine(e: Point, k: usize) -> i32 {
-    ((e >> (INDEX_BITS + FINE * k as u32)) & ((1 << FINE) - 1)) as i32
+    ((e >> (INDEX_BITS + FINE * k as u32)) & WITHIN as Point) as i32
 }
 
 /// A cell found by a search: its index, the image its points are seen
@@ -111,10 +111,10 @@ impl<const D: usize> Grid<D> {
         }
     }
 
-    /// A bound, with a margin, on the round-off in placing a point in its
-    /// cell and in measuring how far apart two points are: a few units in
-    /// the last place of the box's diagonal. A search widened by it finds
-    /// every point within its reach whatever the round-off.
+    /// A bound, with a margin, on the round-off between a centre's steps
+    /// and its position, and in measuring how far apart two points are: a
+    /// few units in the last place of the box's diagonal. A search widened
+    /// by it finds every point within its reach whatever the round-off.
     pub fn rounding(&self) -> f64 {
         self.rounding
     }
@@ -147,7 +147,7 @@ impl<const D: usize> Grid<D> {
         let cell = self.cell_of(steps);
         let mut e = i as Point;
         for (k, &s) in steps.iter().enumerate() {
-            e |= ((s & ((1 << FINE) - 1)) as Point) << (INDEX_BITS + FINE * k as u32);
+            e |= ((s & WITHIN) as Point) << (INDEX_BITS + FINE * k as u32);
         }
         if let Some(was) = was {
             let old = self.cell_of(was);
@@ -194,7 +194,7 @@ impl<const D: usize> Grid<D> {
             let c = (steps[k] >> FINE) as i64;
             let low = c as f64 * self.width[k];
             // The centre's cell starts this many steps below it.
-            let within = (steps[k] & ((1 << FINE) - 1)) as i32;
+            let within = (steps[k] & WITHIN) as i32;
             for offset in [-1i64, 0, 1] {
                 let mut ck = c + offset;
                 let from = ((((offset as i32) << FINE) - within + BIAS) as u64) << (16 * k);

@@ -223,8 +223,9 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
             let reach = self.reach + self.grid.rounding();
             let reach2 = reach * reach;
             let mut near = [Near::default(); 27];
-            let steps = self.centre.steps(i);
-            let count = self.grid.cells_around(&steps, c, reach, &mut near);
+            let count = self
+                .grid
+                .cells_around(self.centre.steps(i), c, reach, &mut near);
             // A point's offset from the centre, in steps, is exact in
             // integers: the same, but for its sign, seen from either end, so
             // a pair is in both lists or in neither.
@@ -325,7 +326,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         self.grid.clear();
         for i in 0..self.centre.len() {
             if Some(i) != self.plane {
-                self.grid.place(i, &self.centre.steps(i), None);
+                self.grid.place(i, self.centre.steps(i), None);
             }
         }
         let [mut buf, mut unsorted] = std::mem::take(&mut self.scratch);
@@ -413,7 +414,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
     #[inline(always)]
     fn prefetch(&self, i: usize) {
         self.lists.prefetch(i);
-        prefetch(self.centre.slot(i));
+        prefetch(self.centre.steps(i));
     }
 
     /// The cells around where p will renew at t.
@@ -480,13 +481,13 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
                 wrapped = true;
             }
         }
-        let was = self.centre.steps(i);
+        let was = *self.centre.steps(i);
         self.centre.set(i, &p.pos);
         self.relist(i);
         // Filed after the search (which passes over i wherever it is filed),
         // which has brought the cells it leaves and enters into the cache.
         if Some(i) != self.plane {
-            self.grid.place(i, &self.centre.steps(i), Some(&was));
+            self.grid.place(i, self.centre.steps(i), Some(&was));
         }
         wrapped
     }
