@@ -53,7 +53,6 @@ pub struct Simulation<const D: usize, N: Neighbourhood<D>, O: Observer<D>> {
     pub(super) neighbours: N,
     pub(super) queue: super::queue::EventQueue,
     pub(super) next: Vec<Packed>,
-    pub(super) stamp: Vec<u32>,
     /// Displacement of each periodic image code.
     pub(super) shifts: Vec<Vector<D>>,
     /// Engine time, measured from `origin` (reset now and then so that long
@@ -99,7 +98,6 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             neighbours,
             queue: super::queue::EventQueue::new(n),
             next: vec![Packed::NOTHING; n],
-            stamp: vec![0; n],
             now: 0.0,
             origin: 0.0,
             rebase_every: (16 * n as u64).max(4096),
@@ -250,7 +248,6 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         match self.next[i].unpack() {
             Next::Pair { j, .. } => {
                 let j = j as usize;
-                prefetch(&self.stamp[j]);
                 prefetch(&self.particles[j]);
                 self.neighbours.prefetch(j);
                 for (k, _) in self.neighbours.candidates(i) {
@@ -272,7 +269,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         self.counts.events += 1;
         match self.next[i].unpack() {
             Next::Pair { j, stamp, image } => {
-                if Next::same_stamp(stamp, self.stamp[j as usize]) {
+                if Next::same_stamp(stamp, self.particles[j as usize].stamp()) {
                     self.collide(i, j as usize, image);
                 } else {
                     self.counts.stale += 1;
@@ -285,7 +282,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 if self.neighbours.renew(i, &mut self.particles[i], self.now) {
                     // The stored position jumped by a box length: partners'
                     // predictions used the old image, so they must be redone.
-                    self.stamp[i] = self.stamp[i].wrapping_add(1);
+                    self.particles[i].bump();
                 }
                 self.predict(i);
             }
@@ -332,8 +329,8 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             };
             self.observer.pair_collision(&event);
         }
-        self.stamp[i] = self.stamp[i].wrapping_add(1);
-        self.stamp[j] = self.stamp[j].wrapping_add(1);
+        self.particles[i].bump();
+        self.particles[j].bump();
         // j's list and centre load while i is predicted.
         self.neighbours.prefetch(j);
         self.predict(i);
@@ -371,7 +368,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             };
             self.observer.wall_hit(&event);
         }
-        self.stamp[i] = self.stamp[i].wrapping_add(1);
+        self.particles[i].bump();
         self.predict(i);
     }
 
@@ -403,14 +400,13 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 }
             }
         }
-        // Partners' bodies and stamps, and this particle's calendar record,
-        // lie scattered in memory: ask for all of them first, so that their
+        // Partners' bodies, and this particle's calendar record, lie
+        // scattered in memory: ask for all of them first, so that their
         // cache misses overlap.
         if self.prefetch_partners {
             self.queue.prefetch(i);
             for (j, _) in self.neighbours.candidates(i) {
                 prefetch(&self.particles[j]);
-                prefetch(&self.stamp[j]);
             }
         }
         let x_i = p.position_at(now);
@@ -428,7 +424,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                     && t < best_t
                 {
                     best_t = t;
-                    best = pair_with(j, image, &self.stamp);
+                    best = pair_with(j, image, &self.particles);
                 }
             }
         } else {
@@ -451,13 +447,13 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                     } else {
                         v
                     };
-                    batch.put(m, (j, image), &r, &v, radius + bodies.radius(j), q.due);
+                    batch.put(m, (j, image), &r, &v, radius + bodies.radius(j), q.due());
                     m += 1;
                 }
                 if m > 0
                     && let Some((j, image)) = batch.earliest(m, now, &mut best_t)
                 {
-                    best = pair_with(j, image, &self.stamp);
+                    best = pair_with(j, image, &self.particles);
                 }
                 if m < BATCH {
                     break;
@@ -486,7 +482,8 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     /// prediction reads it for every partner.
     #[inline(always)]
     fn schedule(&mut self, i: usize, t: f64) {
-        self.particles[i].due = t;
+        let p = &mut self.particles[i];
+        p.set_due(t, p.stamp());
         self.queue.set(i, t);
     }
 
@@ -494,12 +491,17 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     /// and all times shift, so `now - t` never loses digits to a large `now`.
     fn rebase(&mut self) {
         let now = self.now;
-        for p in self.particles.bodies_mut() {
+        self.queue.rebase(now);
+        for (p, t) in self
+            .particles
+            .bodies_mut()
+            .iter_mut()
+            .zip(self.queue.times())
+        {
             p.advance_to(now);
             p.t = 0.0;
-            p.due -= now;
+            p.set_due(t, p.stamp());
         }
-        self.queue.rebase(now);
         self.origin += now;
         self.now = 0.0;
         self.events_since_rebase = 0;
@@ -588,12 +590,12 @@ fn worth_asking_ahead(n: usize) -> bool {
     n >= 500_000
 }
 
-/// A collision with j as it is now (its stamp read from `stamps`).
+/// A collision with j as it is now (its stamp read from its body).
 #[inline(always)]
-fn pair_with(j: usize, image: Image, stamps: &[u32]) -> Next {
+fn pair_with<const D: usize>(j: usize, image: Image, bodies: &Bodies<D>) -> Next {
     Next::Pair {
         j: j as u32,
-        stamp: stamps[j],
+        stamp: bodies[j].stamp(),
         image,
     }
 }
