@@ -2,8 +2,7 @@
 //! prediction reads of a partner is one cache line.
 //!
 //! - A [`Body`] per particle: position, velocity, its time and when its
-//!   next event is due, with its stamp in the due time's last places: all
-//!   that a prediction reads of a partner; 64 bytes
+//!   next event is due, all that a prediction reads of a partner; 64 bytes
 //!   in 3D, side by side from the start of a cache line, so that each is
 //!   one line (a 3D [`Particle`] is 80 bytes and straddled two lines three
 //!   times in four). In 2D a body is 48 bytes and in 1D 32.
@@ -27,17 +26,10 @@ pub struct Body<const D: usize> {
     pub pos: Vector<D>,
     pub vel: Vector<D>,
     pub t: f64,
-    /// When its next event is due (the queue's time rounded up, which a
-    /// prediction reads of every partner: in this line, not another), with
-    /// the particle's stamp in its last 27 bits (see [`Body::set_due`]).
-    due: f64,
+    /// When its next event is due (a copy of the queue's time, which a
+    /// prediction reads of every partner: in this line, not another).
+    pub due: f64,
 }
-
-/// The last places of a due time, which hold the stamp: its low 27 bits,
-/// all that a pair event keeps of it (`next.rs`).
-const STAMP: u64 = (1 << 27) - 1;
-/// The largest finite time whose last places are free for a stamp.
-const NEVER: u64 = f64::MAX.to_bits() & !STAMP;
 
 impl<const D: usize> Body<D> {
     /// Where the particle is at time `t` (free flight since its last event).
@@ -51,41 +43,6 @@ impl<const D: usize> Body<D> {
     pub fn advance_to(&mut self, t: f64) {
         self.pos = self.position_at(t);
         self.t = t;
-    }
-
-    /// When the next event is due, no earlier than the queue's time (later
-    /// by less than 2^-24 of it, and finite for a particle with no event).
-    #[inline(always)]
-    pub fn due(&self) -> f64 {
-        self.due
-    }
-
-    /// Due at `t`, with `stamp`. A non-negative float orders as its bits
-    /// do, so rounding the bits up to a multiple of 2^27 rounds the time
-    /// up: a prediction that takes the rounded time for the partner's next
-    /// event at worst keeps a pair it could have passed over, whose event
-    /// then goes stale. The stamp rides along so that a prediction finds
-    /// it in the line it reads anyway, not in a line of its own.
-    #[inline(always)]
-    pub fn set_due(&mut self, t: f64, stamp: u32) {
-        let bits = if t > 0.0 { t.to_bits() } else { 0 };
-        let up = (bits.saturating_add(STAMP) & !STAMP).min(NEVER);
-        self.due = f64::from_bits(up | u64::from(stamp) & STAMP);
-    }
-
-    /// The particle's stamp (its last 27 bits, all a pair event compares):
-    /// it moves on whenever the particle's motion changes, so that events
-    /// predicted with the old motion are known to be stale.
-    #[inline(always)]
-    pub fn stamp(&self) -> u32 {
-        (self.due.to_bits() & STAMP) as u32
-    }
-
-    /// Move the stamp on, keeping the due time.
-    #[inline(always)]
-    pub fn bump(&mut self) {
-        let stamp = u64::from(self.stamp().wrapping_add(1)) & STAMP;
-        self.due = f64::from_bits(self.due.to_bits() & !STAMP | stamp);
     }
 }
 
@@ -204,7 +161,7 @@ impl<const D: usize> Bodies<D> {
                 pos: p.pos,
                 vel: p.vel,
                 t: p.t,
-                due: f64::from_bits(NEVER),
+                due: f64::INFINITY,
             };
         }
     }
@@ -347,39 +304,5 @@ mod tests {
         assert_eq!(gas.to_vec()[2], ball(3.0, 2.0));
         assert_eq!(bodies.inv_mass.values.len(), 4);
         assert_eq!(bodies.radius(3), 0.2);
-    }
-
-    /// A due time keeps its stamp and is never earlier than the time it
-    /// was given, nor later by more than 2^-24 of it; a particle with no
-    /// event is due later than any finite time a prediction can reach.
-    #[test]
-    fn a_due_time_carries_the_stamp_and_rounds_up() {
-        let mut b = Bodies::<3>::new(&[Particle::new([0.0; 3], [0.0; 3], 1.0, 0.5)])[0];
-        assert_eq!(b.stamp(), 0);
-        let times = [
-            0.0,
-            -0.0,
-            1e-310,
-            1e-9,
-            0.1,
-            1.0 / 3.0,
-            2.0,
-            12345.678,
-            1e300,
-        ];
-        for (k, &t) in times.iter().enumerate() {
-            for stamp in [0, 1, k as u32 * 77_777, (1 << 27) - 1, u32::MAX] {
-                b.set_due(t, stamp);
-                assert_eq!(b.stamp(), stamp & ((1 << 27) - 1));
-                assert!(b.due() >= t && b.due() - t <= t * 2f64.powi(-24) + 1e-300);
-                let due = b.due();
-                b.bump();
-                assert_eq!(b.stamp(), stamp.wrapping_add(1) & ((1 << 27) - 1));
-                assert_eq!(b.due().to_bits() >> 27, due.to_bits() >> 27);
-            }
-        }
-        b.set_due(f64::INFINITY, u32::MAX);
-        b.bump();
-        assert!(b.due().is_finite() && b.due() > 1e308 && b.stamp() == 0);
     }
 }

@@ -114,10 +114,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
                 Next::Renew => o.u8(3),
             }
         }
-        self.particles
-            .bodies()
-            .iter()
-            .for_each(|b| o.u32(b.stamp()));
+        self.stamp.iter().for_each(|&s| o.u32(s));
         self.queue.times().for_each(|t| o.f64(t));
         o.f64(self.now);
         o.f64(self.origin);
@@ -265,8 +262,8 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
         }
         let neighbours = N::restore(&particles, &sim_box, &state).map_err(SaveError::Malformed)?;
         let mut bodies = Bodies::new(&particles);
-        for ((b, &t), &s) in bodies.bodies_mut().iter_mut().zip(&times).zip(&stamp) {
-            b.set_due(t, s);
+        for (b, &t) in bodies.bodies_mut().iter_mut().zip(&times) {
+            b.due = t;
         }
         Ok(Simulation {
             shifts: (0..images)
@@ -277,6 +274,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
             neighbours,
             queue: EventQueue::from_times(times),
             next: next.into_iter().map(Packed::pack).collect(),
+            stamp,
             now,
             origin,
             rebase_every,

@@ -53,6 +53,7 @@ pub struct Simulation<const D: usize, N: Neighbourhood<D>, O: Observer<D>> {
     pub(super) neighbours: N,
     pub(super) queue: super::queue::EventQueue,
     pub(super) next: Vec<Packed>,
+    pub(super) stamp: Vec<u32>,
     /// Displacement of each periodic image code.
     pub(super) shifts: Vec<Vector<D>>,
     /// Engine time, measured from `origin` (reset now and then so that long
@@ -98,6 +99,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             neighbours,
             queue: super::queue::EventQueue::new(n),
             next: vec![Packed::NOTHING; n],
+            stamp: vec![0; n],
             now: 0.0,
             origin: 0.0,
             rebase_every: (16 * n as u64).max(4096),
@@ -248,6 +250,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         match self.next[i].unpack() {
             Next::Pair { j, .. } => {
                 let j = j as usize;
+                prefetch(&self.stamp[j]);
                 prefetch(&self.particles[j]);
                 self.neighbours.prefetch(j);
                 for (k, _) in self.neighbours.candidates(i) {
@@ -269,7 +272,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         self.counts.events += 1;
         match self.next[i].unpack() {
             Next::Pair { j, stamp, image } => {
-                if Next::same_stamp(stamp, self.particles[j as usize].stamp()) {
+                if Next::same_stamp(stamp, self.stamp[j as usize]) {
                     self.collide(i, j as usize, image);
                 } else {
                     self.counts.stale += 1;
@@ -282,7 +285,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 if self.neighbours.renew(i, &mut self.particles[i], self.now) {
                     // The stored position jumped by a box length: partners'
                     // predictions used the old image, so they must be redone.
-                    self.particles[i].bump();
+                    self.stamp[i] = self.stamp[i].wrapping_add(1);
                 }
                 self.predict(i);
             }
@@ -329,8 +332,8 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             };
             self.observer.pair_collision(&event);
         }
-        self.particles[i].bump();
-        self.particles[j].bump();
+        self.stamp[i] = self.stamp[i].wrapping_add(1);
+        self.stamp[j] = self.stamp[j].wrapping_add(1);
         // j's list and centre load while i is predicted.
         self.neighbours.prefetch(j);
         self.predict(i);
@@ -368,7 +371,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             };
             self.observer.wall_hit(&event);
         }
-        self.particles[i].bump();
+        self.stamp[i] = self.stamp[i].wrapping_add(1);
         self.predict(i);
     }
 
@@ -400,13 +403,14 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 }
             }
         }
-        // Partners' bodies, and this particle's calendar record, lie
-        // scattered in memory: ask for all of them first, so that their
+        // Partners' bodies and stamps, and this particle's calendar record,
+        // lie scattered in memory: ask for all of them first, so that their
         // cache misses overlap.
         if self.prefetch_partners {
             self.queue.prefetch(i);
             for (j, _) in self.neighbours.candidates(i) {
                 prefetch(&self.particles[j]);
+                prefetch(&self.stamp[j]);
             }
         }
         let x_i = p.position_at(now);
@@ -424,7 +428,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                     && t < best_t
                 {
                     best_t = t;
-                    best = pair_with(j, image, &self.particles);
+                    best = pair_with(j, image, &self.stamp);
                 }
             }
         } else {
@@ -447,13 +451,13 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                     } else {
                         v
                     };
-                    batch.put(m, (j, image), &r, &v, radius + bodies.radius(j), q.due());
+                    batch.put(m, (j, image), &r, &v, radius + bodies.radius(j), q.due);
                     m += 1;
                 }
                 if m > 0
                     && let Some((j, image)) = batch.earliest(m, now, &mut best_t)
                 {
-                    best = pair_with(j, image, &self.particles);
+                    best = pair_with(j, image, &self.stamp);
                 }
                 if m < BATCH {
                     break;
@@ -482,8 +486,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     /// prediction reads it for every partner.
     #[inline(always)]
     fn schedule(&mut self, i: usize, t: f64) {
-        let p = &mut self.particles[i];
-        p.set_due(t, p.stamp());
+        self.particles[i].due = t;
         self.queue.set(i, t);
     }
 
@@ -491,17 +494,12 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     /// and all times shift, so `now - t` never loses digits to a large `now`.
     fn rebase(&mut self) {
         let now = self.now;
-        self.queue.rebase(now);
-        for (p, t) in self
-            .particles
-            .bodies_mut()
-            .iter_mut()
-            .zip(self.queue.times())
-        {
+        for p in self.particles.bodies_mut() {
             p.advance_to(now);
             p.t = 0.0;
-            p.set_due(t, p.stamp());
+            p.due -= now;
         }
+        self.queue.rebase(now);
         self.origin += now;
         self.now = 0.0;
         self.events_since_rebase = 0;
@@ -590,12 +588,12 @@ fn worth_asking_ahead(n: usize) -> bool {
     n >= 500_000
 }
 
-/// A collision with j as it is now (its stamp read from its body).
+/// A collision with j as it is now (its stamp read from `stamps`).
 #[inline(always)]
-fn pair_with<const D: usize>(j: usize, image: Image, bodies: &Bodies<D>) -> Next {
+fn pair_with(j: usize, image: Image, stamps: &[u32]) -> Next {
     Next::Pair {
         j: j as u32,
-        stamp: bodies[j].stamp(),
+        stamp: stamps[j],
         image,
     }
 }

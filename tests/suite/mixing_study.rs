@@ -174,7 +174,8 @@ fn two_species_counts_approach_one_half_each_side() {
 /// mean-squared displacement is Enskog's value within four standard errors:
 /// the Chapman-Enskog value (1/(2 n sigma)) sqrt(kT/(pi m)) over the
 /// contact value g(sigma), which at this packing (0.02) is 1.03, as large
-/// as two standard errors here (the study's report uses the same value).
+/// as one to two standard errors here (the study's report uses the same
+/// value).
 #[test]
 fn dilute_self_diffusion_is_the_kinetic_theory_value() {
     let side = 60.0;
