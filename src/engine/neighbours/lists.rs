@@ -423,14 +423,10 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
         if PLANES && Some(i) == self.plane {
             return;
         }
-        let x: Vector<D> = std::array::from_fn(|k| {
-            let x = p.pos[k] + (t - p.t) * p.vel[k];
-            if self.periodic[k] {
-                x.rem_euclid(self.size[k])
-            } else {
-                x
-            }
-        });
+        let mut x = p.position_at(t);
+        for k in (0..D).filter(|&k| self.periodic[k]) {
+            x[k] = x[k].rem_euclid(self.size[k]);
+        }
         let mut near = [Near::default(); 27];
         self.grid
             .cells_around(&self.centre.nearest(&x), &x, self.reach, &mut near);
