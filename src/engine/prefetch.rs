@@ -8,14 +8,16 @@
 //! change a trajectory. It takes a reference, so it only ever names live data.
 
 /// Ask for the cache lines holding the first and the last byte of `value`
-/// (all of it for a value up to a line and a bit, like a particle record,
-/// which may straddle two lines).
+/// (all of it for a value up to a line and a bit, which may straddle two
+/// lines). A value no larger than its alignment (up to a line: a 64-byte
+/// body, an index, a time) lies in one line, and one hint is enough.
 #[inline(always)]
 pub fn prefetch<T>(value: &T) {
     let start = value as *const T as *const i8;
     line(start);
-    if std::mem::size_of::<T>() > 1 {
-        line(start.wrapping_add(std::mem::size_of::<T>() - 1));
+    let size = std::mem::size_of::<T>();
+    if size > std::mem::align_of::<T>().min(64) {
+        line(start.wrapping_add(size - 1));
     }
 }
 

@@ -250,6 +250,8 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         match self.next[i].unpack() {
             Next::Pair { j, .. } => {
                 let j = j as usize;
+                // The collision moves both stamps on.
+                prefetch(&self.stamp[i]);
                 prefetch(&self.stamp[j]);
                 prefetch(&self.particles[j]);
                 self.neighbours.prefetch(j);

@@ -425,7 +425,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
         }
         let mut x = p.position_at(t);
         for k in (0..D).filter(|&k| self.periodic[k]) {
-            x[k] = x[k].rem_euclid(self.size[k]);
+            x[k] = into_box(x[k], self.size[k]);
         }
         let mut near = [Near::default(); 27];
         self.grid
@@ -470,10 +470,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
         let mut wrapped = false;
         for k in 0..D {
             if self.periodic[k] && !(0.0..self.size[k]).contains(&p.pos[k]) {
-                p.pos[k] -= self.size[k] * (p.pos[k] / self.size[k]).floor();
-                if p.pos[k] >= self.size[k] {
-                    p.pos[k] = 0.0;
-                }
+                p.pos[k] = into_box(p.pos[k], self.size[k]);
                 wrapped = true;
             }
         }
@@ -487,6 +484,15 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
         }
         wrapped
     }
+}
+
+/// x moved into [0, size) by whole box lengths. Not `rem_euclid`, which
+/// calls `fmod` (1.5 % of the time at 10^6 spheres, asking ahead for
+/// renewals' cells); `floor` is one instruction.
+#[inline(always)]
+fn into_box(x: f64, size: f64) -> f64 {
+    let y = x - size * (x / size).floor();
+    if y >= size { 0.0 } else { y }
 }
 
 /// Saved as every centre, each coordinate as two words (low, high): the lists
