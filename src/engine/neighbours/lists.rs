@@ -487,7 +487,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
 }
 
 /// x moved into [0, size) by whole box lengths. Not `rem_euclid`, which
-/// calls `fmod` (1.5 % of the time at 10^6 spheres, asking ahead for
+/// calls `fmod` (1.6 % of the time at 10^6 spheres, asking ahead for
 /// renewals' cells); `floor` is one instruction.
 #[inline(always)]
 fn into_box(x: f64, size: f64) -> f64 {
