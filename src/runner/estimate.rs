@@ -5,6 +5,7 @@
 
 use crate::descriptor::validate::resolved;
 use crate::descriptor::validate_scene::{count, dimension};
+use crate::engine::boundary::ball_volume;
 use crate::model::descriptor::Descriptor;
 use crate::model::run_spec::RunSpec;
 use crate::model::scene::{Mass, PistonSpec, SceneSpec, Velocities};
@@ -110,7 +111,7 @@ fn collision_rates(scene: &SceneSpec) -> Option<Rates> {
     let sigma = weighted(&|i| scene.species[i].radius.bounds().iter().sum::<f64>());
     let kt = temperature(scene, mass, gas);
     let rho = n as f64 / volume;
-    let phi = rho * ball_volume(d, sigma);
+    let phi = rho * ball_volume(d, 0.5 * sigma);
     // Contact density over rho.
     let g = match d {
         1 => 1.0 / (1.0 - phi).max(1e-3),
@@ -152,15 +153,6 @@ fn piston_kt(scene: &SceneSpec, p: &PistonSpec, kt: f64) -> f64 {
         }
         (None, None, Some(Velocities::Explicit { .. })) => 0.0,
         _ => kt,
-    }
-}
-
-/// Volume of a ball of diameter `sigma` in `d` dimensions.
-fn ball_volume(d: usize, sigma: f64) -> f64 {
-    match d {
-        1 => sigma,
-        2 => PI * sigma * sigma / 4.0,
-        _ => PI * sigma.powi(3) / 6.0,
     }
 }
 
