@@ -246,7 +246,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     /// for an event ago) ask for what its second stage will read (its
     /// partner's records and its own partners' bodies, or the cells of its
     /// renewal); for the one after it, its records.
-    fn ask_ahead(&self, i: usize, t: f64) {
+    fn ask_ahead(&mut self, i: usize, t: f64) {
         match self.next[i].unpack() {
             Next::Pair { j, .. } => {
                 let j = j as usize;

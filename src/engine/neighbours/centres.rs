@@ -63,7 +63,12 @@ impl<const D: usize> Centres<D> {
     /// i's centre: the middle of its step on each axis.
     #[inline(always)]
     pub fn get(&self, i: usize) -> Vector<D> {
-        let at = &self.at[i];
+        self.position(&self.at[i])
+    }
+
+    /// Where a centre at these steps lies.
+    #[inline(always)]
+    pub fn position(&self, at: &[u32; D]) -> Vector<D> {
         std::array::from_fn(|k| (at[k] as f64 + 0.5) * self.step[k])
     }
 

@@ -168,6 +168,12 @@ impl<const D: usize> Grid<D> {
         self.members(near.cell)
     }
 
+    /// Start loading a cell's points (a hint).
+    #[inline(always)]
+    pub fn prefetch_cell(&self, cell: &Near) {
+        self.cells.prefetch(cell.cell);
+    }
+
     /// The (up to) 3^D cells around a centre (at `steps`, at position `x`;
     /// D <= 3) that may hold a point within `reach` of it (the centre's own
     /// point may be filed there too), into `near`, and how many there are.

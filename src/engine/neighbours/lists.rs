@@ -109,6 +109,19 @@ pub struct NeighbourList<const D: usize, const PLANES: bool = false> {
     scratch: [Vec<u32>; 2],
     /// A renewal's changes to other lists: remove i from j's, or put `e` in.
     changes: Vec<(usize, Option<u32>)>,
+    /// The cells the next renewal will search, worked out when it was asked
+    /// ahead for.
+    ahead: CellsAhead<D>,
+}
+
+/// The cells around a centre, which follow from its steps alone: asking
+/// ahead for a renewal works them out, and its search reuses them if the
+/// centre is the one asked for.
+#[derive(Debug, Clone, Default)]
+struct CellsAhead<const D: usize> {
+    steps: Option<[u32; D]>,
+    near: [Near; 27],
+    count: usize,
 }
 
 impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
@@ -203,6 +216,13 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         self.shell * (1.0 - 1e-9)
     }
 
+    /// How far a search reaches: widened by the round-off, it can never
+    /// miss a point.
+    #[inline(always)]
+    fn search_reach(&self) -> f64 {
+        self.reach + self.grid.rounding()
+    }
+
     /// Everything whose neighbourhood meets that of i at its current centre,
     /// into `found`, sorted (`unsorted` is room to work in, only ever grown).
     fn find(&self, i: usize, found: &mut Vec<u32>, unsorted: &mut Vec<u32>) {
@@ -219,19 +239,34 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         } else {
             // Most points tested are not neighbours, at random: write every
             // one and keep it or not without a branch that would mispredict.
-            // Widened by the round-off, the reach can never miss a point.
-            let reach = self.reach + self.grid.rounding();
+            let reach = self.search_reach();
             let reach2 = reach * reach;
-            let mut near = [Near::default(); 27];
-            let count = self
-                .grid
-                .cells_around(self.centre.steps(i), c, reach, &mut near);
+            let steps = self.centre.steps(i);
+            let mut own = [Near::default(); 27];
+            let near = match &self.ahead {
+                CellsAhead {
+                    steps: Some(s),
+                    near,
+                    count,
+                } if s == steps => {
+                    // Asked for an event ago, not all are in the nearest
+                    // cache yet: asking again starts them all moving at once.
+                    for cell in &near[..*count] {
+                        self.grid.prefetch_cell(cell);
+                    }
+                    &near[..*count]
+                }
+                _ => {
+                    let count = self.grid.cells_around(steps, c, reach, &mut own);
+                    &own[..count]
+                }
+            };
             // A point's offset from the centre, in steps, is exact in
             // integers: the same, but for its sign, seen from either end, so
             // a pair is in both lists or in neither.
             let step = self.centre.step();
             let mut kept = 0;
-            for cell in &near[..count] {
+            for cell in near {
                 let points = self.grid.points(cell);
                 // Room for every point so far and the plane.
                 if unsorted.len() <= kept + points.len() {
@@ -395,6 +430,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
             plane_list: Vec::new(),
             scratch: Default::default(),
             changes: Vec::new(),
+            ahead: CellsAhead::default(),
         };
         lists.list_all();
         Ok(lists)
@@ -417,9 +453,9 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
         prefetch(self.centre.steps(i));
     }
 
-    /// The cells around where p will renew at t.
+    /// The cells around where p will renew at t, kept for its search.
     #[inline]
-    fn prefetch_renewal(&self, i: usize, p: &Body<D>, t: f64) {
+    fn prefetch_renewal(&mut self, i: usize, p: &Body<D>, t: f64) {
         if PLANES && Some(i) == self.plane {
             return;
         }
@@ -427,9 +463,16 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
         for k in (0..D).filter(|&k| self.periodic[k]) {
             x[k] = into_box(x[k], self.size[k]);
         }
-        let mut near = [Near::default(); 27];
-        self.grid
-            .cells_around(&self.centre.nearest(&x), &x, self.reach, &mut near);
+        let steps = self.centre.nearest(&x);
+        let reach = self.search_reach();
+        let ahead = &mut self.ahead;
+        ahead.count = self.grid.cells_around(
+            &steps,
+            &self.centre.position(&steps),
+            reach,
+            &mut ahead.near,
+        );
+        ahead.steps = Some(steps);
     }
 
     /// When p (particle i) reaches the edge of its neighbourhood.
@@ -599,6 +642,60 @@ mod tests {
             entries.sort_unstable();
             assert_eq!(sorted, entries, "{len} entries");
         }
+    }
+
+    /// The cells a renewal's search reuses, worked out when it was asked
+    /// ahead for, change no list: renewals asked ahead for (the right one,
+    /// or another: a guess of the next event can be wrong) leave every list
+    /// as renewals that were not, near the box's faces and corners too.
+    #[test]
+    fn cells_worked_out_ahead_change_no_list() {
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+        let side = 9.0;
+        let sim_box = SimBox::<3>::periodic([side; 3]);
+        let particles: Vec<_> = (0..400)
+            .map(|_| {
+                let x = std::array::from_fn(|_| rng.random_range(0.0..side));
+                Particle::new(x, [0.0; 3], 1.0, 0.5)
+            })
+            .collect();
+        let mut asked = NeighbourList::<3>::build(&particles, &sim_box).unwrap();
+        let mut not_asked = asked.clone();
+        let mut bodies = crate::engine::bodies::Bodies::new(&particles);
+        let (mut reused, mut now) = (0, 0.0);
+        for _ in 0..2_000 {
+            let i = rng.random_range(0..particles.len());
+            let guess = if rng.random_bool(0.8) {
+                i
+            } else {
+                rng.random_range(0..particles.len())
+            };
+            for k in [i, guess] {
+                let p = &mut bodies.bodies_mut()[k];
+                p.vel = std::array::from_fn(|_| rng.random_range(-3.0..3.0));
+            }
+            now += 0.1;
+            let ahead = bodies.bodies()[guess];
+            asked.prefetch_renewal(guess, &ahead, now);
+            let mut p = bodies.bodies()[i];
+            asked.renew(i, &mut p, now);
+            reused += usize::from(asked.ahead.steps.as_ref() == Some(asked.centre.steps(i)));
+            let mut q = bodies.bodies()[i];
+            not_asked.renew(i, &mut q, now);
+            assert_eq!(p, q);
+            bodies.bodies_mut()[i] = p;
+            for j in [i, guess] {
+                assert!(
+                    asked.candidates(j).eq(not_asked.candidates(j)),
+                    "list {j} after renewing {i}"
+                );
+            }
+        }
+        for j in 0..particles.len() {
+            assert!(asked.candidates(j).eq(not_asked.candidates(j)), "list {j}");
+        }
+        assert!(reused > 1_400, "the search reused the cells {reused} times");
     }
 
     /// A particle found inside its neighbourhood at a time renews no

@@ -79,9 +79,9 @@ pub trait Neighbourhood<const D: usize>: Sized + Clone + Send {
     #[inline(always)]
     fn prefetch(&self, _i: usize) {}
     /// Start loading what renewing `p` (particle i) at time `t` will read
-    /// (a hint).
+    /// (a hint; what it works out to ask may be kept for the renewal).
     #[inline(always)]
-    fn prefetch_renewal(&self, _i: usize, _p: &Body<D>, _t: f64) {}
+    fn prefetch_renewal(&mut self, _i: usize, _p: &Body<D>, _t: f64) {}
     /// When `p` (particle i) next needs its neighbourhood renewed (absolute time).
     fn next_renewal(&self, i: usize, p: &Body<D>) -> Option<f64>;
     /// Whether `p` (particle i) is still inside its neighbourhood at time `t`:
