@@ -583,11 +583,11 @@ pub(super) fn worth_prefetching(n: usize) -> bool {
 
 /// Whether a system of `n` particles is large enough for the event loop to
 /// ask one event ahead (`ask_ahead`): measured with spheres at packing 0.30,
-/// it saves about 10 % at N = 10^6, but asking for the next renewal's cells
-/// and the partner's records alone was flat at 256,000 and cost up to 5 % at
-/// 32,000, whose state fits in this machine's 32 MiB of L3.
+/// it saves about 10 % at N = 10^6 and, since a renewal's search reuses the
+/// cells worked out for it, 12 % at 256,000; at 32,000, whose state fits in
+/// this machine's 32 MiB of L3, it is flat.
 fn worth_asking_ahead(n: usize) -> bool {
-    n >= 500_000
+    n >= 200_000
 }
 
 /// A collision with j as it is now (its stamp read from `stamps`).
