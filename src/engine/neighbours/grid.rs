@@ -168,10 +168,13 @@ impl<const D: usize> Grid<D> {
         self.members(near.cell)
     }
 
-    /// Start loading a cell's points (a hint).
+    /// Start loading these cells' points (and counts), all at once so that
+    /// their cache misses overlap (a hint; see prefetch.rs).
     #[inline(always)]
-    pub fn prefetch_cell(&self, cell: &Near) {
-        self.cells.prefetch(cell.cell);
+    pub fn prefetch_cells(&self, near: &[Near]) {
+        for cell in near {
+            self.cells.prefetch(cell.cell);
+        }
     }
 
     /// The (up to) 3^D cells around a centre (at `steps`, at position `x`;
@@ -253,12 +256,8 @@ impl<const D: usize> Grid<D> {
             }
         }
         // Each cell's points lie elsewhere in memory, at a place known
-        // without reading anything (but for the few cells that spilled):
-        // ask for all of them (and their counts) first, so that their cache
-        // misses overlap (see prefetch.rs).
-        for cell in &near[..found] {
-            self.cells.prefetch(cell.cell);
-        }
+        // without reading anything (but for the few cells that spilled).
+        self.prefetch_cells(&near[..found]);
         found
     }
 

@@ -251,9 +251,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
                 } if s == steps => {
                     // Asked for an event ago, not all are in the nearest
                     // cache yet: asking again starts them all moving at once.
-                    for cell in &near[..*count] {
-                        self.grid.prefetch_cell(cell);
-                    }
+                    self.grid.prefetch_cells(&near[..*count]);
                     &near[..*count]
                 }
                 _ => {
