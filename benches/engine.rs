@@ -24,7 +24,7 @@
 //!   for 5 collisions per particle instead of 20 to keep the whole run near
 //!   four minutes; at phi = 0.30 the FCC start has long melted by then.
 
-use std::alloc::{GlobalAlloc, Layout, System};
+use std::alloc::{GlobalAlloc, Layout};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
@@ -32,6 +32,7 @@ use bonkers::engine::{
     Chain, Counts, Disks, NeighbourList, Neighbourhood, Observer, Particle, SimBox, Simulation,
     Snapshot, Stop, WithPlane,
 };
+use bonkers::pages::HugePages;
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
 use rand::RngExt;
 
@@ -39,7 +40,8 @@ use rand::RngExt;
 mod common;
 
 // ---------------------------------------------------------------------------
-// A counting allocator: bytes currently allocated by the whole process.
+// A counting allocator: bytes currently allocated by the whole process, over
+// the huge-page allocator `study` runs with.
 
 struct Counting;
 
@@ -47,25 +49,25 @@ static ALLOCATED: AtomicUsize = AtomicUsize::new(0);
 
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        let p = unsafe { System.alloc(layout) };
+        let p = unsafe { HugePages.alloc(layout) };
         if !p.is_null() {
             ALLOCATED.fetch_add(layout.size(), Ordering::Relaxed);
         }
         p
     }
     unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-        let p = unsafe { System.alloc_zeroed(layout) };
+        let p = unsafe { HugePages.alloc_zeroed(layout) };
         if !p.is_null() {
             ALLOCATED.fetch_add(layout.size(), Ordering::Relaxed);
         }
         p
     }
     unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        unsafe { System.dealloc(ptr, layout) };
+        unsafe { HugePages.dealloc(ptr, layout) };
         ALLOCATED.fetch_sub(layout.size(), Ordering::Relaxed);
     }
     unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        let p = unsafe { System.realloc(ptr, layout, new_size) };
+        let p = unsafe { HugePages.realloc(ptr, layout, new_size) };
         if !p.is_null() {
             ALLOCATED.fetch_sub(layout.size(), Ordering::Relaxed);
             ALLOCATED.fetch_add(new_size, Ordering::Relaxed);

@@ -1,7 +1,7 @@
 //! bonkers: ensemble studies of hard-particle gases on an exact event-driven engine.
 //!
 //! Layers, bottom to top (each imports only layers below it; a test reads the
-//! `use crate::` lines): model and files, engine, theory, scene, observe, stats,
+//! `use crate::` lines): model, files and pages, engine, theory, scene, observe, stats,
 //! studies, report, descriptor, runner, cli.
 
 // Loops over axes `for k in 0..D` index several vectors at once and read like
@@ -14,6 +14,7 @@ pub mod engine;
 pub mod files;
 pub mod model;
 pub mod observe;
+pub mod pages;
 pub mod report;
 pub mod runner;
 pub mod scene;

@@ -5,9 +5,9 @@
 use std::path::{Path, PathBuf};
 
 /// Bottom to top; modules on one line are one layer and may not import
-/// each other (`model` and `files` import nothing at all).
+/// each other (`model`, `files` and `pages` import nothing at all).
 const LAYERS: &[&[&str]] = &[
-    &["model", "files"],
+    &["model", "files", "pages"],
     &["engine"],
     &["theory"],
     &["scene"],
