@@ -318,7 +318,7 @@ fn paired(
 /// minutes apart, and this machine's speed moves by 20 % in that time.
 fn flat_cost_check() {
     let name = "spheres_3d_phi0.30/paired_N864_vs_N1000188";
-    if !wanted(name) || std::env::var("BONKERS_BENCH_SKIP_1M").is_ok_and(|v| v != "0") {
+    if !wanted(name) {
         return;
     }
     let melted = |cells: usize, per_particle: u64| {
@@ -474,7 +474,9 @@ fn engine(c: &mut Criterion) {
         }
     }
 
-    flat_cost_check();
+    if !skip_1m {
+        flat_cost_check();
+    }
 
     eprintln!();
     eprintln!(
