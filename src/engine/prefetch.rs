@@ -23,6 +23,36 @@ pub fn prefetch<T>(value: &T) {
     }
 }
 
+/// Where a slice's records lie, to ask for record k while the slice is
+/// borrowed elsewhere (a hint reads nothing, so it needs no borrow). A
+/// record gets a hint for its first and its last byte, as `prefetch` gives
+/// one larger than its alignment (a body).
+#[derive(Debug, Clone, Copy)]
+pub struct Lines {
+    start: usize,
+    size: usize,
+    len: usize,
+}
+
+impl Lines {
+    pub fn of<T>(records: &[T]) -> Self {
+        Lines {
+            start: records.as_ptr() as usize,
+            size: std::mem::size_of::<T>(),
+            len: records.len(),
+        }
+    }
+
+    #[inline(always)]
+    pub fn ask(&self, k: usize) {
+        if k < self.len && self.size > 0 {
+            let start = self.start + k * self.size;
+            line(start as *const i8);
+            line((start + self.size - 1) as *const i8);
+        }
+    }
+}
+
 #[inline(always)]
 fn line(address: *const i8) {
     #[cfg(target_arch = "x86_64")]

@@ -22,7 +22,7 @@ use super::neighbours::{Image, Neighbourhood, PLANE, image_shift, no_shift, sepa
 use super::next::{Next, Packed};
 use super::observer::{Observer, PairCollision, Snapshot, WallHit};
 use super::particle::Particle;
-use super::prefetch::prefetch;
+use super::prefetch::{Lines, prefetch};
 use super::thermal;
 use super::vector::{Vector, axis0, dot, norm2, sub};
 
@@ -284,7 +284,15 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             Next::Wall { axis, high } => self.hit_wall(i, axis as usize, high),
             Next::Renew => {
                 self.counts.renewals += 1;
-                if self.neighbours.renew(i, &mut self.particles[i], self.now) {
+                let now = self.now;
+                let wrapped = if worth_asking_ahead(self.particles.len()) {
+                    let bodies = Lines::of(self.particles.bodies());
+                    self.neighbours
+                        .renew_asking(i, &mut self.particles[i], now, bodies)
+                } else {
+                    self.neighbours.renew(i, &mut self.particles[i], now)
+                };
+                if wrapped {
                     // The stored position jumped by a box length: partners'
                     // predictions used the old image, so they must be redone.
                     self.stamp[i] = self.stamp[i].wrapping_add(1);
@@ -297,6 +305,13 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
 
     fn collide(&mut self, i: usize, j: usize, image: Image) {
         let now = self.now;
+        if worth_asking_ahead(self.particles.len()) {
+            // j's list was asked for an event ago: its partners' bodies load
+            // while the collision is done and i is predicted.
+            for (k, _) in self.neighbours.candidates(j) {
+                prefetch(&self.particles[k]);
+            }
+        }
         self.particles[i].advance_to(now);
         self.particles[j].advance_to(now);
         let (p, q) = (&self.particles[i], &self.particles[j]);

@@ -27,7 +27,7 @@ use super::{Image, Neighbourhood, PLANE, Persist};
 use crate::engine::bodies::Body;
 use crate::engine::boundary::{SimBox, ball_volume};
 use crate::engine::particle::Particle;
-use crate::engine::prefetch::prefetch;
+use crate::engine::prefetch::{Lines, prefetch};
 use crate::engine::vector::{Vector, add_scaled, axis0, dot, norm2, sub};
 
 /// A list entry packs a particle index and an image code: `j << 5 | image`.
@@ -290,13 +290,41 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         sort_distinct(&unsorted[..kept], found);
     }
 
+    /// `renew`, and `renew_asking` when `bodies` is given.
+    fn renew_with(&mut self, i: usize, p: &mut Body<D>, now: f64, bodies: Option<Lines>) -> bool {
+        p.advance_to(now);
+        let mut wrapped = false;
+        for k in 0..D {
+            if self.periodic[k] && !(0.0..self.size[k]).contains(&p.pos[k]) {
+                p.pos[k] = into_box(p.pos[k], self.size[k]);
+                wrapped = true;
+            }
+        }
+        let was = *self.centre.steps(i);
+        self.centre.set(i, &p.pos);
+        self.relist(i, bodies);
+        // Filed after the search (which passes over i wherever it is filed),
+        // which has brought the cells it leaves and enters into the cache.
+        if Some(i) != self.plane {
+            self.grid.place(i, self.centre.steps(i), Some(&was));
+        }
+        wrapped
+    }
+
     /// Renew i's list around its current centre, and its partners' lists.
     /// Most partners stay partners, so only the differences between the old
     /// list and the new (both sorted) touch other lists.
-    fn relist(&mut self, i: usize) {
+    /// `bodies`: ask for the new partners' bodies as soon as they are found
+    /// (a renewal's prediction reads them next).
+    fn relist(&mut self, i: usize, bodies: Option<Lines>) {
         let [mut new, mut unsorted] = std::mem::take(&mut self.scratch);
         let mut changes = std::mem::take(&mut self.changes);
         self.find(i, &mut new, &mut unsorted);
+        if let Some(bodies) = bodies {
+            for &e in &new {
+                bodies.ask(unpack(e).0);
+            }
+        }
         self.differences(i, &new, &mut changes);
         // Every list the changes touch asked for at once, so that the misses
         // on these scattered lists overlap; then the changes.
@@ -507,23 +535,11 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
     }
 
     fn renew(&mut self, i: usize, p: &mut Body<D>, now: f64) -> bool {
-        p.advance_to(now);
-        let mut wrapped = false;
-        for k in 0..D {
-            if self.periodic[k] && !(0.0..self.size[k]).contains(&p.pos[k]) {
-                p.pos[k] = into_box(p.pos[k], self.size[k]);
-                wrapped = true;
-            }
-        }
-        let was = *self.centre.steps(i);
-        self.centre.set(i, &p.pos);
-        self.relist(i);
-        // Filed after the search (which passes over i wherever it is filed),
-        // which has brought the cells it leaves and enters into the cache.
-        if Some(i) != self.plane {
-            self.grid.place(i, self.centre.steps(i), Some(&was));
-        }
-        wrapped
+        self.renew_with(i, p, now, None)
+    }
+
+    fn renew_asking(&mut self, i: usize, p: &mut Body<D>, now: f64, bodies: Lines) -> bool {
+        self.renew_with(i, p, now, Some(bodies))
     }
 }
 
@@ -677,7 +693,7 @@ mod tests {
             let ahead = bodies.bodies()[guess];
             asked.prefetch_renewal(guess, &ahead, now);
             let mut p = bodies.bodies()[i];
-            asked.renew(i, &mut p, now);
+            asked.renew_asking(i, &mut p, now, Lines::of(bodies.bodies()));
             reused += usize::from(asked.ahead.steps.as_ref() == Some(asked.centre.steps(i)));
             let mut q = bodies.bodies()[i];
             not_asked.renew(i, &mut q, now);

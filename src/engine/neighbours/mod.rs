@@ -14,6 +14,7 @@ pub use lists::NeighbourList;
 use super::bodies::Body;
 use super::boundary::SimBox;
 use super::particle::Particle;
+use super::prefetch::Lines;
 use super::vector::Vector;
 
 /// Which periodic image of a partner: per axis an offset in {-1, 0, +1}
@@ -94,6 +95,12 @@ pub trait Neighbourhood<const D: usize>: Sized + Clone + Send {
     /// Renew particle i's neighbourhood at time `now` (moving `p` there);
     /// returns true if its stored position jumped by a box length.
     fn renew(&mut self, i: usize, p: &mut Body<D>, now: f64) -> bool;
+    /// `renew`, asking for the new partners' `bodies` as soon as they are
+    /// found, so that they load while the other lists change (a hint).
+    #[inline(always)]
+    fn renew_asking(&mut self, i: usize, p: &mut Body<D>, now: f64, _bodies: Lines) -> bool {
+        self.renew(i, p, now)
+    }
 }
 
 /// A neighbourhood's state for a save file: what `build` cannot recompute
