@@ -30,6 +30,7 @@ pub use dynamics::Dynamics;
 pub use neighbours::{Chain, Image, NeighbourList, Neighbourhood, PLANE, Persist};
 pub use observer::{Observer, PairCollision, Snapshot, WallHit};
 pub use particle::{Particle, Shape};
+pub use prefetch::Lines;
 pub use save::{FORMAT_VERSION, SaveError};
 pub use simulation::{Counts, Simulation, Stop, degrees_of_freedom};
 pub use stepper::Stepper;

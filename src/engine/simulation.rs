@@ -284,15 +284,12 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             Next::Wall { axis, high } => self.hit_wall(i, axis as usize, high),
             Next::Renew => {
                 self.counts.renewals += 1;
-                let now = self.now;
-                let wrapped = if worth_asking_ahead(self.particles.len()) {
-                    let bodies = Lines::of(self.particles.bodies());
-                    self.neighbours
-                        .renew_asking(i, &mut self.particles[i], now, bodies)
-                } else {
-                    self.neighbours.renew(i, &mut self.particles[i], now)
-                };
-                if wrapped {
+                let bodies = worth_asking_ahead(self.particles.len())
+                    .then(|| Lines::of(self.particles.bodies()));
+                if self
+                    .neighbours
+                    .renew(i, &mut self.particles[i], self.now, bodies)
+                {
                     // The stored position jumped by a box length: partners'
                     // predictions used the old image, so they must be redone.
                     self.stamp[i] = self.stamp[i].wrapping_add(1);

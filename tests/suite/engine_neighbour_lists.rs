@@ -6,8 +6,8 @@
 use crate::common;
 
 use bonkers::engine::{
-    Body, Image, NeighbourList, Neighbourhood, Observer, PLANE, PairCollision, Particle, SimBox,
-    Simulation, Snapshot, Stop, WithPlane,
+    Body, Image, Lines, NeighbourList, Neighbourhood, Observer, PLANE, PairCollision, Particle,
+    SimBox, Simulation, Snapshot, Stop, WithPlane,
 };
 
 /// Every other particle is a candidate, in every periodic image; nothing is
@@ -48,7 +48,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for AllPairs<D, PLANES
         None
     }
 
-    fn renew(&mut self, _i: usize, _p: &mut Body<D>, _now: f64) -> bool {
+    fn renew(&mut self, _i: usize, _p: &mut Body<D>, _now: f64, _bodies: Option<Lines>) -> bool {
         false
     }
 }

@@ -5,6 +5,7 @@ use super::{Image, Neighbourhood, Persist};
 use crate::engine::bodies::Body;
 use crate::engine::boundary::SimBox;
 use crate::engine::particle::Particle;
+use crate::engine::prefetch::Lines;
 
 #[derive(Debug, Clone)]
 pub struct Chain {
@@ -51,7 +52,7 @@ impl<const D: usize> Neighbourhood<D> for Chain {
         None
     }
 
-    fn renew(&mut self, _i: usize, _p: &mut Body<D>, _now: f64) -> bool {
+    fn renew(&mut self, _i: usize, _p: &mut Body<D>, _now: f64, _bodies: Option<Lines>) -> bool {
         false
     }
 }

@@ -290,27 +290,6 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         sort_distinct(&unsorted[..kept], found);
     }
 
-    /// `renew`, and `renew_asking` when `bodies` is given.
-    fn renew_with(&mut self, i: usize, p: &mut Body<D>, now: f64, bodies: Option<Lines>) -> bool {
-        p.advance_to(now);
-        let mut wrapped = false;
-        for k in 0..D {
-            if self.periodic[k] && !(0.0..self.size[k]).contains(&p.pos[k]) {
-                p.pos[k] = into_box(p.pos[k], self.size[k]);
-                wrapped = true;
-            }
-        }
-        let was = *self.centre.steps(i);
-        self.centre.set(i, &p.pos);
-        self.relist(i, bodies);
-        // Filed after the search (which passes over i wherever it is filed),
-        // which has brought the cells it leaves and enters into the cache.
-        if Some(i) != self.plane {
-            self.grid.place(i, self.centre.steps(i), Some(&was));
-        }
-        wrapped
-    }
-
     /// Renew i's list around its current centre, and its partners' lists.
     /// Most partners stay partners, so only the differences between the old
     /// list and the new (both sorted) touch other lists.
@@ -534,12 +513,24 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
         dot(&x, &x) < edge * edge
     }
 
-    fn renew(&mut self, i: usize, p: &mut Body<D>, now: f64) -> bool {
-        self.renew_with(i, p, now, None)
-    }
-
-    fn renew_asking(&mut self, i: usize, p: &mut Body<D>, now: f64, bodies: Lines) -> bool {
-        self.renew_with(i, p, now, Some(bodies))
+    fn renew(&mut self, i: usize, p: &mut Body<D>, now: f64, bodies: Option<Lines>) -> bool {
+        p.advance_to(now);
+        let mut wrapped = false;
+        for k in 0..D {
+            if self.periodic[k] && !(0.0..self.size[k]).contains(&p.pos[k]) {
+                p.pos[k] = into_box(p.pos[k], self.size[k]);
+                wrapped = true;
+            }
+        }
+        let was = *self.centre.steps(i);
+        self.centre.set(i, &p.pos);
+        self.relist(i, bodies);
+        // Filed after the search (which passes over i wherever it is filed),
+        // which has brought the cells it leaves and enters into the cache.
+        if Some(i) != self.plane {
+            self.grid.place(i, self.centre.steps(i), Some(&was));
+        }
+        wrapped
     }
 }
 
@@ -693,10 +684,10 @@ mod tests {
             let ahead = bodies.bodies()[guess];
             asked.prefetch_renewal(guess, &ahead, now);
             let mut p = bodies.bodies()[i];
-            asked.renew_asking(i, &mut p, now, Lines::of(bodies.bodies()));
+            asked.renew(i, &mut p, now, Some(Lines::of(bodies.bodies())));
             reused += usize::from(asked.ahead.steps.as_ref() == Some(asked.centre.steps(i)));
             let mut q = bodies.bodies()[i];
-            not_asked.renew(i, &mut q, now);
+            not_asked.renew(i, &mut q, now, None);
             assert_eq!(p, q);
             bodies.bodies_mut()[i] = p;
             for j in [i, guess] {

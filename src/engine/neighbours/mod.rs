@@ -93,14 +93,10 @@ pub trait Neighbourhood<const D: usize>: Sized + Clone + Send {
         false
     }
     /// Renew particle i's neighbourhood at time `now` (moving `p` there);
-    /// returns true if its stored position jumped by a box length.
-    fn renew(&mut self, i: usize, p: &mut Body<D>, now: f64) -> bool;
-    /// `renew`, asking for the new partners' `bodies` as soon as they are
-    /// found, so that they load while the other lists change (a hint).
-    #[inline(always)]
-    fn renew_asking(&mut self, i: usize, p: &mut Body<D>, now: f64, _bodies: Lines) -> bool {
-        self.renew(i, p, now)
-    }
+    /// returns true if its stored position jumped by a box length. With
+    /// `bodies`, ask for the new partners' bodies as soon as they are found,
+    /// so that they load while the other lists change (a hint).
+    fn renew(&mut self, i: usize, p: &mut Body<D>, now: f64, bodies: Option<Lines>) -> bool;
 }
 
 /// A neighbourhood's state for a save file: what `build` cannot recompute
