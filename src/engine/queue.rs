@@ -82,6 +82,15 @@ pub struct EventQueue {
     /// where the walk has got to (`NONE`: nowhere, and no walk).
     walks: bool,
     ahead: u32,
+    /// Particles whose new event lies beyond the current bucket but is not
+    /// yet filed in its list (only when `walks`): filing waits two
+    /// reschedules, so that the scattered lines it touches load meanwhile
+    /// (the list head and the old list's neighbours in the first, the
+    /// head's record in the second). Their records already hold the new
+    /// time; until then they stay where they were, or nowhere if they left
+    /// the heap. `deferred[0]`: deferred since the last reschedule;
+    /// `deferred[1]`: their heads' records asked for, filed at the next.
+    deferred: [Vec<u32>; 2],
 }
 
 impl EventQueue {
@@ -112,6 +121,7 @@ impl EventQueue {
             mask: 0,
             walks: n >= WALK_FROM,
             ahead: NONE,
+            deferred: Default::default(),
         };
         q.rebuild();
         q
@@ -153,6 +163,9 @@ impl EventQueue {
     #[inline]
     pub fn set(&mut self, i: usize, t: f64) {
         self.walk_ahead();
+        if self.walks {
+            self.file_deferred();
+        }
         let r = self.record[i];
         let b = self.bucket(t);
         if r.prev == IN_HEAP && b <= self.current && t.is_finite() {
@@ -172,10 +185,84 @@ impl EventQueue {
         if let Some(head) = self.heads.get(b as usize & self.mask) {
             prefetch(head);
         }
+        if self.walks && b > self.current {
+            self.defer(i, t, r);
+            return;
+        }
         self.remove(i);
         self.file(i, t, b);
         if self.heap.is_empty() {
+            self.file_every_deferred();
             self.refill();
+        }
+    }
+
+    /// Put off filing i's event at t (beyond the current bucket) for two
+    /// reschedules (see `deferred`), asking for the lines that taking it
+    /// out of its old list will touch.
+    #[inline(always)]
+    fn defer(&mut self, i: usize, t: f64, r: Record) {
+        if r.prev == IN_HEAP {
+            // The heap must never hold a time that is no longer i's.
+            self.remove(i);
+        } else if r.prev != PARKED {
+            if r.prev & HEAD == 0 {
+                prefetch(&self.record[(r.prev & LIST) as usize]);
+            }
+            if let Some(next) = self.record.get(r.next as usize) {
+                prefetch(next);
+            }
+        }
+        self.record[i].time = t;
+        self.deferred[0].push(i as u32);
+        if self.heap.is_empty() {
+            self.file_every_deferred();
+            self.refill();
+        }
+    }
+
+    /// File every deferred event: the heap is about to move on to the next
+    /// bucket, where some of them may belong.
+    fn file_every_deferred(&mut self) {
+        self.file_deferred();
+        self.file_deferred();
+    }
+
+    /// One step of deferred filing: file the events deferred two
+    /// reschedules ago (each record holds its time), and ask for the record
+    /// of the list head each event deferred since will go in front of.
+    #[inline(always)]
+    fn file_deferred(&mut self) {
+        let young = std::mem::take(&mut self.deferred[0]);
+        let ready = std::mem::replace(&mut self.deferred[1], young);
+        for &i in &ready {
+            let i = i as usize;
+            let t = self.record[i].time;
+            self.remove(i);
+            self.file(i, t, self.bucket(t));
+        }
+        self.deferred[0] = ready;
+        self.deferred[0].clear();
+        for &i in &self.deferred[1] {
+            let list = self.list_of(self.bucket(self.record[i as usize].time));
+            if let Some(r) = self
+                .heads
+                .get(list)
+                .and_then(|&h| self.record.get(h as usize))
+            {
+                prefetch(r);
+            }
+        }
+    }
+
+    /// The list an event in bucket b (beyond the current one) goes in: its
+    /// bucket's on the ring, or the overflow list.
+    #[inline(always)]
+    fn list_of(&self, b: u64) -> usize {
+        if b - self.current.min(b) > self.mask as u64 {
+            self.ring_len()
+        } else {
+            b as usize & self.mask
         }
     }
 
@@ -238,6 +325,8 @@ impl EventQueue {
         // Anew, not cleared: before the first tuning every event fell in
         // one bucket, and the heap's room for all of them would stay.
         self.heap = Vec::new();
+        // Filed below with the rest, by the times their records hold.
+        self.deferred.iter_mut().for_each(Vec::clear);
         self.in_ring = 0;
         self.in_overflow = 0;
         for r in &mut self.record {
@@ -271,12 +360,14 @@ impl EventQueue {
             });
             self.record[i].prev = IN_HEAP;
             self.sift_up(k);
-        } else if b - self.current <= self.mask as u64 {
-            self.in_ring += 1;
-            self.link(i, b as usize & self.mask);
         } else {
-            self.in_overflow += 1;
-            self.link(i, self.ring_len());
+            let list = self.list_of(b);
+            if list == self.ring_len() {
+                self.in_overflow += 1;
+            } else {
+                self.in_ring += 1;
+            }
+            self.link(i, list);
         }
     }
 

@@ -275,6 +275,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
             queue: EventQueue::from_times(times),
             next: next.into_iter().map(Packed::pack).collect(),
             stamp,
+            unstamped: Vec::new(),
             now,
             origin,
             rebase_every,

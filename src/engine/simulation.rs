@@ -54,6 +54,11 @@ pub struct Simulation<const D: usize, N: Neighbourhood<D>, O: Observer<D>> {
     pub(super) queue: super::queue::EventQueue,
     pub(super) next: Vec<Packed>,
     pub(super) stamp: Vec<u32>,
+    /// Particles whose scheduled collision still lacks its partner's stamp
+    /// (once predictions ask ahead): a prediction asks for the winner's
+    /// stamp line, read as the next event begins, so that no prediction
+    /// waits on it.
+    pub(super) unstamped: Vec<u32>,
     /// Displacement of each periodic image code.
     pub(super) shifts: Vec<Vector<D>>,
     /// Engine time, measured from `origin` (reset now and then so that long
@@ -100,6 +105,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             queue: super::queue::EventQueue::new(n),
             next: vec![Packed::NOTHING; n],
             stamp: vec![0; n],
+            unstamped: Vec::new(),
             now: 0.0,
             origin: 0.0,
             rebase_every: (16 * n as u64).max(4096),
@@ -116,6 +122,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         for i in 0..n {
             sim.predict(i);
         }
+        sim.stamp_partners();
         sim.queue.retune();
         Ok(sim)
     }
@@ -218,6 +225,8 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 self.rebase();
             }
         }
+        self.stamp_partners();
+        self.neighbours.catch_up();
         if end_absolute.is_finite() {
             self.now = end_absolute - self.origin;
         }
@@ -272,6 +281,8 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     /// Apply particle i's scheduled event, which is due now.
     fn handle(&mut self, i: usize) {
         self.counts.events += 1;
+        self.stamp_partners();
+        self.neighbours.catch_up();
         match self.next[i].unpack() {
             Next::Pair { j, stamp, image } => {
                 if Next::same_stamp(stamp, self.stamp[j as usize]) {
@@ -417,16 +428,18 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 }
             }
         }
-        // Partners' bodies and stamps, and this particle's calendar record,
-        // lie scattered in memory: ask for all of them first, so that their
+        // Partners' bodies, and this particle's calendar record, lie
+        // scattered in memory: ask for all of them first, so that their
         // cache misses overlap.
         if self.prefetch_partners {
             self.queue.prefetch(i);
             for (j, _) in self.neighbours.candidates(i) {
                 prefetch(&self.particles[j]);
-                prefetch(&self.stamp[j]);
             }
         }
+        // Once the system outgrows the caches, the winner's stamp is left to
+        // `stamp_partners`, so that no prediction waits on its line.
+        let stamps = (!self.prefetch_partners).then_some(&self.stamp[..]);
         let x_i = p.position_at(now);
         if D == 1 {
             for (j, image) in self.neighbours.candidates(i) {
@@ -442,7 +455,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                     && t < best_t
                 {
                     best_t = t;
-                    best = pair_with(j, image, &self.stamp);
+                    best = pair_with(j, image, stamps);
                 }
             }
         } else {
@@ -471,7 +484,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 if m > 0
                     && let Some((j, image)) = batch.earliest(m, now, &mut best_t)
                 {
-                    best = pair_with(j, image, &self.stamp);
+                    best = pair_with(j, image, stamps);
                 }
                 if m < BATCH {
                     break;
@@ -492,8 +505,31 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 best = Next::Renew;
             }
         }
+        if let Next::Pair { j, .. } = best
+            && self.prefetch_partners
+        {
+            prefetch(&self.stamp[j as usize]);
+            self.unstamped.push(i as u32);
+        }
         self.next[i] = Packed::pack(best);
         self.schedule(i, best_t);
+    }
+
+    /// Give each collision predicted since the last call its partner's
+    /// stamp. Stamps move on only when an event is handled, so this is the
+    /// stamp the prediction saw.
+    fn stamp_partners(&mut self) {
+        for &i in &self.unstamped {
+            let i = i as usize;
+            if let Next::Pair { j, image, .. } = self.next[i].unpack() {
+                self.next[i] = Packed::pack(Next::Pair {
+                    j,
+                    stamp: self.stamp[j as usize],
+                    image,
+                });
+            }
+        }
+        self.unstamped.clear();
     }
 
     /// Put i's next event at time t in the queue, and in i's body, where a
@@ -602,12 +638,13 @@ fn worth_asking_ahead(n: usize) -> bool {
     n >= 200_000
 }
 
-/// A collision with j as it is now (its stamp read from `stamps`).
+/// A collision with j as it is now: its stamp read from `stamps`, or
+/// (without) filled in by `stamp_partners`.
 #[inline(always)]
-fn pair_with(j: usize, image: Image, stamps: &[u32]) -> Next {
+fn pair_with(j: usize, image: Image, stamps: Option<&[u32]>) -> Next {
     Next::Pair {
         j: j as u32,
-        stamp: stamps[j],
+        stamp: stamps.map_or(0, |s| s[j]),
         image,
     }
 }

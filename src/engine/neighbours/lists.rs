@@ -107,8 +107,10 @@ pub struct NeighbourList<const D: usize, const PLANES: bool = false> {
     plane_list: Vec<u32>,
     /// Room to work in while renewing, kept to spare an allocation each time.
     scratch: [Vec<u32>; 2],
-    /// A renewal's changes to other lists: remove i from j's, or put `e` in.
+    /// The last renewal's changes to other lists, not yet made (see
+    /// `catch_up`): take `renewed` out of j's list, or put `e` in.
     changes: Vec<(usize, Option<u32>)>,
+    renewed: usize,
     /// The cells the next renewal will search, worked out when it was asked
     /// ahead for.
     ahead: CellsAhead<D>,
@@ -296,6 +298,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
     /// `bodies`: ask for the new partners' bodies as soon as they are found
     /// (a renewal's prediction reads them next).
     fn relist(&mut self, i: usize, bodies: Option<Lines>) {
+        self.catch_up();
         let [mut new, mut unsorted] = std::mem::take(&mut self.scratch);
         let mut changes = std::mem::take(&mut self.changes);
         self.find(i, &mut new, &mut unsorted);
@@ -306,15 +309,9 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         }
         self.differences(i, &new, &mut changes);
         // Every list the changes touch asked for at once, so that the misses
-        // on these scattered lists overlap; then the changes.
+        // on these scattered lists overlap; the changes wait for `catch_up`.
         for &(j, _) in &changes {
             self.lists.prefetch(j);
-        }
-        for &(j, entry) in &changes {
-            match entry {
-                None => self.remove(j, i),
-                Some(e) => self.insert(j, e),
-            }
         }
         if PLANES && Some(i) == self.plane {
             self.plane_list.clear();
@@ -324,6 +321,7 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         }
         self.scratch = [new, unsorted];
         self.changes = changes;
+        self.renewed = i;
     }
 
     /// What renewing i's list to `new` does to other lists, by a merge of
@@ -435,6 +433,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
             plane_list: Vec::new(),
             scratch: Default::default(),
             changes: Vec::new(),
+            renewed: 0,
             ahead: CellsAhead::default(),
         };
         lists.list_all();
@@ -511,6 +510,21 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
         let edge = self.edge();
         let x = add_scaled(&d, t - p.t, &v);
         dot(&x, &x) < edge * edge
+    }
+
+    fn catch_up(&mut self) {
+        if self.changes.is_empty() {
+            return;
+        }
+        let changes = std::mem::take(&mut self.changes);
+        for &(j, entry) in &changes {
+            match entry {
+                None => self.remove(j, self.renewed),
+                Some(e) => self.insert(j, e),
+            }
+        }
+        self.changes = changes;
+        self.changes.clear();
     }
 
     fn renew(&mut self, i: usize, p: &mut Body<D>, now: f64, bodies: Option<Lines>) -> bool {
@@ -685,9 +699,11 @@ mod tests {
             asked.prefetch_renewal(guess, &ahead, now);
             let mut p = bodies.bodies()[i];
             asked.renew(i, &mut p, now, Some(Lines::of(bodies.bodies())));
+            asked.catch_up();
             reused += usize::from(asked.ahead.steps.as_ref() == Some(asked.centre.steps(i)));
             let mut q = bodies.bodies()[i];
             not_asked.renew(i, &mut q, now, None);
+            not_asked.catch_up();
             assert_eq!(p, q);
             bodies.bodies_mut()[i] = p;
             for j in [i, guess] {

@@ -92,6 +92,11 @@ pub trait Neighbourhood<const D: usize>: Sized + Clone + Send {
     fn inside_at(&self, _i: usize, _p: &Body<D>, _t: f64) -> bool {
         false
     }
+    /// Make the changes to other particles' lists that the last renewal
+    /// left undone, so that the lines they write load meanwhile. Until
+    /// then only the renewed particle's own neighbourhood is up to date.
+    #[inline(always)]
+    fn catch_up(&mut self) {}
     /// Renew particle i's neighbourhood at time `now` (moving `p` there);
     /// returns true if its stored position jumped by a box length. With
     /// `bodies`, ask for the new partners' bodies as soon as they are found,
