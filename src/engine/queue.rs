@@ -233,8 +233,9 @@ impl EventQueue {
     /// of the list head each event deferred since will go in front of.
     #[inline(always)]
     fn file_deferred(&mut self) {
-        let young = std::mem::take(&mut self.deferred[0]);
-        let ready = std::mem::replace(&mut self.deferred[1], young);
+        let [young, old] = &mut self.deferred;
+        std::mem::swap(young, old);
+        let ready = std::mem::take(&mut self.deferred[0]);
         for &i in &ready {
             let i = i as usize;
             let t = self.record[i].time;
@@ -256,7 +257,7 @@ impl EventQueue {
     }
 
     /// The list an event in bucket b (beyond the current one) goes in: its
-    /// bucket's on the ring, or the overflow list.
+    /// bucket's on the ring, or the overflow list (as `file` decides).
     #[inline(always)]
     fn list_of(&self, b: u64) -> usize {
         if b - self.current.min(b) > self.mask as u64 {
@@ -360,14 +361,12 @@ impl EventQueue {
             });
             self.record[i].prev = IN_HEAP;
             self.sift_up(k);
+        } else if b - self.current <= self.mask as u64 {
+            self.in_ring += 1;
+            self.link(i, b as usize & self.mask);
         } else {
-            let list = self.list_of(b);
-            if list == self.ring_len() {
-                self.in_overflow += 1;
-            } else {
-                self.in_ring += 1;
-            }
-            self.link(i, list);
+            self.in_overflow += 1;
+            self.link(i, self.ring_len());
         }
     }
 
