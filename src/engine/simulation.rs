@@ -123,6 +123,8 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             sim.predict(i);
         }
         sim.stamp_partners();
+        // Anew: those first predictions left room in it for every particle.
+        sim.unstamped = Vec::new();
         sim.queue.retune();
         Ok(sim)
     }
