@@ -95,6 +95,22 @@ impl Packed {
     }
 }
 
+impl Default for Packed {
+    fn default() -> Self {
+        Packed::NOTHING
+    }
+}
+
+/// What the queue keeps of a particle's event beside its time: what it is,
+/// and the particle's own stamp, which moves on whenever its motion changes.
+/// 16 bytes, so that the queue's 32-byte records never straddle a line.
+#[derive(Debug, Clone, Copy, Default)]
+#[repr(align(16))]
+pub(super) struct Event {
+    pub next: Packed,
+    pub stamp: u32,
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

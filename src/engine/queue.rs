@@ -51,20 +51,23 @@ impl Entry {
     }
 }
 
-/// Particle i's event and its place in the calendar, in one 16-byte
-/// record: rescheduling reads and writes one line of it, not four.
+/// Particle i's event (its time, and `what` the queue's user keeps of it)
+/// and its place in the calendar, in one record: handling and rescheduling
+/// an event read and write one line of it, not several.
 #[derive(Debug, Clone, Copy)]
-struct Record {
+struct Record<P> {
     time: f64,
     next: u32,
     prev: u32,
+    what: P,
 }
-const _: () = assert!(std::mem::size_of::<Record>() == 16);
+const _: () = assert!(std::mem::size_of::<Record<()>>() == 16);
 
 #[derive(Debug, Clone)]
-pub struct EventQueue {
-    /// By particle: doubly linked bucket lists, or a heap slot.
-    record: Vec<Record>,
+pub struct EventQueue<P = ()> {
+    /// By particle: its event, and its place (doubly linked bucket lists,
+    /// or a heap slot).
+    record: Vec<Record<P>>,
     /// The current bucket's events.
     heap: Vec<Entry>,
     /// List heads: one per ring bucket, then the overflow list.
@@ -93,7 +96,7 @@ pub struct EventQueue {
     deferred: [Vec<u32>; 2],
 }
 
-impl EventQueue {
+impl<P: Copy + Default> EventQueue<P> {
     pub fn new(n: usize) -> Self {
         Self::from_times(vec![f64::INFINITY; n])
     }
@@ -109,6 +112,7 @@ impl EventQueue {
                     time,
                     next: NONE,
                     prev: PARKED,
+                    what: P::default(),
                 })
                 .collect(),
             heap: Vec::new(),
@@ -132,6 +136,22 @@ impl EventQueue {
         self.record.iter().map(|r| r.time)
     }
 
+    /// What is kept of particle i's event beside its time.
+    #[inline(always)]
+    pub fn what(&self, i: usize) -> &P {
+        &self.record[i].what
+    }
+
+    #[inline(always)]
+    pub fn what_mut(&mut self, i: usize) -> &mut P {
+        &mut self.record[i].what
+    }
+
+    /// What is kept of every particle's event, by particle index.
+    pub fn whats(&self) -> impl ExactSizeIterator<Item = &P> + '_ {
+        self.record.iter().map(|r| &r.what)
+    }
+
     /// The particle with the earliest event, and its time.
     #[inline(always)]
     pub fn peek(&self) -> Option<(usize, f64)> {
@@ -147,16 +167,6 @@ impl EventQueue {
             _ => self.heap.get(1),
         }
         .map(|e| e.particle as usize)
-    }
-
-    /// Start loading what rescheduling i will read (a hint).
-    #[inline(always)]
-    pub fn prefetch(&self, i: usize) {
-        if self.walks
-            && let Some(r) = self.record.get(i)
-        {
-            prefetch(r);
-        }
     }
 
     /// Replace particle i's event time.
@@ -201,7 +211,7 @@ impl EventQueue {
     /// reschedules (see `deferred`), asking for the lines that taking it
     /// out of its old list will touch.
     #[inline(always)]
-    fn defer(&mut self, i: usize, t: f64, r: Record) {
+    fn defer(&mut self, i: usize, t: f64, r: Record<P>) {
         if r.prev == IN_HEAP {
             // The heap must never hold a time that is no longer i's.
             self.remove(i);
@@ -562,7 +572,7 @@ mod tests {
     #[test]
     fn rebuilt_queues_keep_times_and_order() {
         let times = vec![2.0, 0.25, 7.0, 0.25, 1.0];
-        let mut q = EventQueue::from_times(times.clone());
+        let mut q = EventQueue::<()>::from_times(times.clone());
         assert!(q.times().eq(times.iter().copied()));
         q.rebase(0.25);
         assert_eq!(q.peek(), Some((1, 0.0)));
@@ -585,7 +595,7 @@ mod tests {
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
         let n = 300;
         let times: Vec<f64> = (0..n).map(|_| rng.random::<f64>()).collect();
-        let mut q = EventQueue::from_times(times.clone());
+        let mut q = EventQueue::<()>::from_times(times.clone());
         q.walks = walks;
         let mut reference = times;
         for step in 0..200_000 {

@@ -15,7 +15,7 @@ use rand_chacha::ChaCha8Rng;
 use super::bodies::Bodies;
 use super::boundary::{Axis, SimBox, Wall};
 use super::neighbours::{PLANE, Persist, image_shift};
-use super::next::{Next, Packed};
+use super::next::{Event, Next, Packed};
 use super::observer::Observer;
 use super::particle::{Particle, Shape};
 use super::queue::EventQueue;
@@ -97,8 +97,8 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
                 }
             }
         }
-        for next in &self.next {
-            match next.unpack() {
+        for event in self.queue.whats() {
+            match event.next.unpack() {
                 Next::Nothing => o.u8(0),
                 Next::Pair { j, stamp, image } => {
                     o.u8(1);
@@ -114,7 +114,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
                 Next::Renew => o.u8(3),
             }
         }
-        self.stamp.iter().for_each(|&s| o.u32(s));
+        self.queue.whats().for_each(|e| o.u32(e.stamp));
         self.queue.times().for_each(|t| o.f64(t));
         o.f64(self.now);
         o.f64(self.origin);
@@ -265,6 +265,13 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
         for (b, &t) in bodies.bodies_mut().iter_mut().zip(&times) {
             b.due = t;
         }
+        let mut queue = EventQueue::from_times(times);
+        for (k, (next, stamp)) in next.into_iter().zip(stamp).enumerate() {
+            *queue.what_mut(k) = Event {
+                next: Packed::pack(next),
+                stamp,
+            };
+        }
         Ok(Simulation {
             shifts: (0..images)
                 .map(|c| image_shift(c as u8, &sim_box.size))
@@ -272,9 +279,7 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
             particles: bodies,
             sim_box,
             neighbours,
-            queue: EventQueue::from_times(times),
-            next: next.into_iter().map(Packed::pack).collect(),
-            stamp,
+            queue,
             unstamped: Vec::new(),
             now,
             origin,

@@ -19,10 +19,11 @@ use super::build::{BuildError, check_overlaps, validate};
 use super::collide::{bounce, line_contact_time};
 use super::contacts::{BATCH, Batch};
 use super::neighbours::{Image, Neighbourhood, PLANE, image_shift, no_shift, separation};
-use super::next::{Next, Packed};
+use super::next::{Event, Next, Packed};
 use super::observer::{Observer, PairCollision, Snapshot, WallHit};
 use super::particle::Particle;
 use super::prefetch::{Lines, prefetch};
+use super::queue::EventQueue;
 use super::thermal;
 use super::vector::{Vector, axis0, dot, norm2, sub};
 
@@ -51,9 +52,8 @@ pub struct Simulation<const D: usize, N: Neighbourhood<D>, O: Observer<D>> {
     pub(super) particles: Bodies<D>,
     pub(super) sim_box: SimBox<D>,
     pub(super) neighbours: N,
-    pub(super) queue: super::queue::EventQueue,
-    pub(super) next: Vec<Packed>,
-    pub(super) stamp: Vec<u32>,
+    /// Each particle's event: its time, what it is, and the particle's stamp.
+    pub(super) queue: EventQueue<Event>,
     /// Particles whose scheduled collision still lacks its partner's stamp
     /// (once predictions ask ahead): a prediction asks for the winner's
     /// stamp line, read as the next event begins, so that no prediction
@@ -102,9 +102,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             particles: Bodies::new(&particles),
             sim_box,
             neighbours,
-            queue: super::queue::EventQueue::new(n),
-            next: vec![Packed::NOTHING; n],
-            stamp: vec![0; n],
+            queue: EventQueue::new(n),
             unstamped: Vec::new(),
             now: 0.0,
             origin: 0.0,
@@ -215,7 +213,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             // The next event is almost always the queue's front now: start
             // loading what it will read while this loop iteration finishes.
             if let Some((i, t)) = self.queue.peek() {
-                prefetch(&self.next[i]);
+                prefetch(self.queue.what(i));
                 prefetch(&self.particles[i]);
                 self.neighbours.prefetch(i);
                 if ask_ahead {
@@ -258,12 +256,11 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     /// partner's records and its own partners' bodies, or the cells of its
     /// renewal); for the one after it, its records.
     fn ask_ahead(&mut self, i: usize, t: f64) {
-        match self.next[i].unpack() {
+        match self.next(i) {
             Next::Pair { j, .. } => {
                 let j = j as usize;
-                // The collision moves both stamps on.
-                prefetch(&self.stamp[i]);
-                prefetch(&self.stamp[j]);
+                // The collision moves j's stamp on and reschedules j.
+                prefetch(self.queue.what(j));
                 prefetch(&self.particles[j]);
                 self.neighbours.prefetch(j);
                 for (k, _) in self.neighbours.candidates(i) {
@@ -274,7 +271,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             _ => {}
         }
         if let Some(k) = self.queue.peek_second() {
-            prefetch(&self.next[k]);
+            prefetch(self.queue.what(k));
             prefetch(&self.particles[k]);
             self.neighbours.prefetch(k);
         }
@@ -285,9 +282,9 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         self.counts.events += 1;
         self.stamp_partners();
         self.neighbours.catch_up();
-        match self.next[i].unpack() {
+        match self.next(i) {
             Next::Pair { j, stamp, image } => {
-                if Next::same_stamp(stamp, self.stamp[j as usize]) {
+                if Next::same_stamp(stamp, self.stamp(j as usize)) {
                     self.collide(i, j as usize, image);
                 } else {
                     self.counts.stale += 1;
@@ -305,7 +302,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 {
                     // The stored position jumped by a box length: partners'
                     // predictions used the old image, so they must be redone.
-                    self.stamp[i] = self.stamp[i].wrapping_add(1);
+                    self.move_stamp_on(i);
                 }
                 self.predict(i);
             }
@@ -359,8 +356,8 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             };
             self.observer.pair_collision(&event);
         }
-        self.stamp[i] = self.stamp[i].wrapping_add(1);
-        self.stamp[j] = self.stamp[j].wrapping_add(1);
+        self.move_stamp_on(i);
+        self.move_stamp_on(j);
         // j's list and centre load while i is predicted.
         self.neighbours.prefetch(j);
         self.predict(i);
@@ -398,7 +395,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             };
             self.observer.wall_hit(&event);
         }
-        self.stamp[i] = self.stamp[i].wrapping_add(1);
+        self.move_stamp_on(i);
         self.predict(i);
     }
 
@@ -430,18 +427,17 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 }
             }
         }
-        // Partners' bodies, and this particle's calendar record, lie
-        // scattered in memory: ask for all of them first, so that their
-        // cache misses overlap.
+        // Partners' bodies lie scattered in memory: ask for all of them
+        // first, so that their cache misses overlap. (This particle's
+        // calendar record is in cache: its event was read from it.)
         if self.prefetch_partners {
-            self.queue.prefetch(i);
             for (j, _) in self.neighbours.candidates(i) {
                 prefetch(&self.particles[j]);
             }
         }
         // Once the system outgrows the caches, the winner's stamp is left to
         // `stamp_partners`, so that no prediction waits on its line.
-        let stamps = (!self.prefetch_partners).then_some(&self.stamp[..]);
+        let stamps = (!self.prefetch_partners).then_some(&self.queue);
         let x_i = p.position_at(now);
         if D == 1 {
             for (j, image) in self.neighbours.candidates(i) {
@@ -510,10 +506,10 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         if let Next::Pair { j, .. } = best
             && self.prefetch_partners
         {
-            prefetch(&self.stamp[j as usize]);
+            prefetch(self.queue.what(j as usize));
             self.unstamped.push(i as u32);
         }
-        self.next[i] = Packed::pack(best);
+        self.queue.what_mut(i).next = Packed::pack(best);
         self.schedule(i, best_t);
     }
 
@@ -523,15 +519,33 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     fn stamp_partners(&mut self) {
         for &i in &self.unstamped {
             let i = i as usize;
-            if let Next::Pair { j, image, .. } = self.next[i].unpack() {
-                self.next[i] = Packed::pack(Next::Pair {
+            if let Next::Pair { j, image, .. } = self.next(i) {
+                self.queue.what_mut(i).next = Packed::pack(Next::Pair {
                     j,
-                    stamp: self.stamp[j as usize],
+                    stamp: self.stamp(j as usize),
                     image,
                 });
             }
         }
         self.unstamped.clear();
+    }
+
+    /// What particle i has scheduled.
+    #[inline(always)]
+    fn next(&self, i: usize) -> Next {
+        self.queue.what(i).next.unpack()
+    }
+
+    #[inline(always)]
+    fn stamp(&self, i: usize) -> u32 {
+        self.queue.what(i).stamp
+    }
+
+    /// Particle i's motion changed: predictions that used the old one are stale.
+    #[inline(always)]
+    fn move_stamp_on(&mut self, i: usize) {
+        let stamp = &mut self.queue.what_mut(i).stamp;
+        *stamp = stamp.wrapping_add(1);
     }
 
     /// Put i's next event at time t in the queue, and in i's body, where a
@@ -643,10 +657,10 @@ fn worth_asking_ahead(n: usize) -> bool {
 /// A collision with j as it is now: its stamp read from `stamps`, or
 /// (without) filled in by `stamp_partners`.
 #[inline(always)]
-fn pair_with(j: usize, image: Image, stamps: Option<&[u32]>) -> Next {
+fn pair_with(j: usize, image: Image, stamps: Option<&EventQueue<Event>>) -> Next {
     Next::Pair {
         j: j as u32,
-        stamp: stamps.map_or(0, |s| s[j]),
+        stamp: stamps.map_or(0, |q| q.what(j).stamp),
         image,
     }
 }

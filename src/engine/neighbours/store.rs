@@ -8,55 +8,76 @@
 //! number takes the place of its first entry in line. A list is always one
 //! contiguous slice, wherever it lives. An entry is a word: a neighbour
 //! list's a `u32`, a cell's a `u64` (a point and where it is in the cell).
+//!
+//! A list's length is a byte: a million lists' lengths fill a megabyte,
+//! which the caches keep, so reading a list in a system far larger than the
+//! caches waits on the list's own line and not on its length's too. A
+//! spilled list's length is the first word of its slot.
 
 use crate::engine::prefetch::prefetch;
 
-/// Marks a list's length when the list lives in the spill store.
-const SPILLED: u32 = 1 << 31;
+/// A list's length byte when the list lives in the spill store.
+const SPILLED: u8 = u8::MAX;
+/// The most entries a list keeps in line: its length must fit below `SPILLED`.
+const MOST_IN_LINE: usize = SPILLED as usize - 1;
 
 /// Room in line for lists of this mean length: the mean and half the
 /// standard deviation of counts that fall at random (Poisson), so that a
 /// few lists in a hundred spill.
 pub(super) fn room_for(mean: f64) -> usize {
     if mean.is_finite() {
-        (mean + 0.5 * mean.sqrt()).ceil().clamp(1.0, 1024.0) as usize
+        (mean + 0.5 * mean.sqrt())
+            .ceil()
+            .clamp(1.0, MOST_IN_LINE as f64) as usize
     } else {
         1
     }
 }
 
-/// What a store holds: a word, which can also hold a spill slot's number.
+/// What a store holds: a word, which can also hold a number (a spill
+/// slot's, or a spilled list's length).
 pub(super) trait Entry: Copy + Default {
-    fn from_slot(slot: u32) -> Self;
-    fn slot(self) -> u32;
+    fn from_number(n: u32) -> Self;
+    fn number(self) -> u32;
 }
 
 impl Entry for u32 {
-    fn from_slot(slot: u32) -> Self {
-        slot
+    fn from_number(n: u32) -> Self {
+        n
     }
-    fn slot(self) -> u32 {
+    fn number(self) -> u32 {
         self
     }
 }
 
 impl Entry for u64 {
-    fn from_slot(slot: u32) -> Self {
-        slot as u64
+    fn from_number(n: u32) -> Self {
+        n as u64
     }
-    fn slot(self) -> u32 {
+    fn number(self) -> u32 {
         self as u32
     }
+}
+
+/// Where a list's entries are: from `at` in line or in the spill store, `n`
+/// of them, in room for `room`.
+#[derive(Clone, Copy)]
+struct Place {
+    spilled: bool,
+    at: usize,
+    n: usize,
+    room: usize,
 }
 
 #[derive(Debug, Clone)]
 pub(super) struct ListStore<T = u32> {
     /// List i in line is `inline[i * room..][..len]`.
     room: usize,
-    /// Each list's length, with `SPILLED` set if it lives in the spill store.
-    len: Vec<u32>,
+    /// Each list's length, or `SPILLED` if it lives in the spill store.
+    len: Vec<u8>,
     inline: Vec<T>,
-    /// Slot s is `spill[s * spill_room..]`; `free` holds the slots to reuse.
+    /// Slot s is `spill[s * spill_room..]`: the list's length, then its
+    /// entries; `free` holds the slots to reuse.
     spill_room: usize,
     spill: Vec<T>,
     free: Vec<u32>,
@@ -65,56 +86,66 @@ pub(super) struct ListStore<T = u32> {
 impl<T: Entry> ListStore<T> {
     /// `lists` empty lists, each with room for `room` entries in line.
     pub fn new(lists: usize, room: usize) -> Self {
-        let room = room.max(1);
+        let room = room.clamp(1, MOST_IN_LINE);
         ListStore {
             room,
             len: vec![0; lists],
             inline: vec![T::default(); lists * room],
-            spill_room: room + room.div_ceil(2),
+            spill_room: 1 + room + room.div_ceil(2),
             spill: Vec::new(),
             free: Vec::new(),
         }
     }
 
+    /// Where list i's entries are.
     #[inline(always)]
-    fn where_is(&self, i: usize) -> (bool, usize) {
+    fn place(&self, i: usize) -> Place {
         let len = self.len[i];
-        (len & SPILLED != 0, (len & !SPILLED) as usize)
-    }
-
-    /// Where list i's room starts (in line or in the spill store) and how
-    /// long the room is.
-    #[inline(always)]
-    fn room_of(&self, i: usize, spilled: bool) -> (usize, usize) {
-        if spilled {
-            let slot = self.inline[i * self.room].slot() as usize;
-            (slot * self.spill_room, self.spill_room)
-        } else {
-            (i * self.room, self.room)
+        if len != SPILLED {
+            return Place {
+                spilled: false,
+                at: i * self.room,
+                n: len as usize,
+                room: self.room,
+            };
+        }
+        let slot = self.inline[i * self.room].number() as usize * self.spill_room;
+        Place {
+            spilled: true,
+            at: slot + 1,
+            n: self.spill[slot].number() as usize,
+            room: self.spill_room - 1,
         }
     }
 
     #[inline(always)]
     pub fn get(&self, i: usize) -> &[T] {
-        let (spilled, n) = self.where_is(i);
-        let (at, _) = self.room_of(i, spilled);
-        if spilled {
-            &self.spill[at..at + n]
-        } else {
-            &self.inline[at..at + n]
-        }
+        let p = self.place(i);
+        let store = if p.spilled { &self.spill } else { &self.inline };
+        &store[p.at..p.at + p.n]
     }
 
     /// List i's whole room and how much of it the list fills.
+    #[inline(always)]
     fn room_mut(&mut self, i: usize) -> (&mut [T], usize) {
-        let (spilled, n) = self.where_is(i);
-        let (at, room) = self.room_of(i, spilled);
-        let store = if spilled {
+        let p = self.place(i);
+        let store = if p.spilled {
             &mut self.spill
         } else {
             &mut self.inline
         };
-        (&mut store[at..at + room], n)
+        (&mut store[p.at..p.at + p.room], p.n)
+    }
+
+    /// Make list i's length n (no more than its room).
+    #[inline(always)]
+    fn set_len(&mut self, i: usize, n: usize) {
+        if self.len[i] == SPILLED {
+            let slot = self.inline[i * self.room].number() as usize;
+            self.spill[slot * self.spill_room] = T::from_number(n as u32);
+        } else {
+            self.len[i] = n as u8;
+        }
     }
 
     /// List i's length and the two ends of its room in line (a hint: its
@@ -131,9 +162,9 @@ impl<T: Entry> ListStore<T> {
 
     /// List i, with room for one more entry at its end.
     fn with_room_for_one(&mut self, i: usize) -> (&mut [T], usize) {
-        let (spilled, n) = self.where_is(i);
-        if n == self.room_of(i, spilled).1 {
-            self.make_room(i, spilled);
+        let p = self.place(i);
+        if p.n == p.room {
+            self.make_room(i, p.spilled);
         }
         self.room_mut(i)
     }
@@ -142,7 +173,7 @@ impl<T: Entry> ListStore<T> {
     pub fn push(&mut self, i: usize, e: T) {
         let (list, n) = self.with_room_for_one(i);
         list[n] = e;
-        self.len[i] += 1;
+        self.set_len(i, n + 1);
     }
 
     /// Make entry `at` of list i `e`.
@@ -155,28 +186,26 @@ impl<T: Entry> ListStore<T> {
     pub fn swap_remove(&mut self, i: usize, at: usize) {
         let (list, n) = self.room_mut(i);
         list[at] = list[n - 1];
-        self.len[i] -= 1;
+        self.set_len(i, n - 1);
         self.settle(i);
     }
 
     /// A spilled list that fits in line again, with one place to spare (so
     /// that a list at the edge does not go back and forth), comes back.
     fn settle(&mut self, i: usize) {
-        let (spilled, n) = self.where_is(i);
-        if spilled && n < self.room {
-            let (from, _) = self.room_of(i, true);
+        let p = self.place(i);
+        if p.spilled && p.n < self.room {
             let at = i * self.room;
-            self.free.push(self.inline[at].slot());
-            self.inline[at..at + n].copy_from_slice(&self.spill[from..from + n]);
-            self.len[i] = n as u32;
+            self.free.push(self.inline[at].number());
+            self.inline[at..at + p.n].copy_from_slice(&self.spill[p.at..p.at + p.n]);
+            self.len[i] = p.n as u8;
         }
     }
 
     /// Make list i `entries`.
     pub fn set(&mut self, i: usize, entries: &[T]) {
-        let (spilled, _) = self.where_is(i);
-        if spilled {
-            self.free.push(self.inline[i * self.room].slot());
+        if self.len[i] == SPILLED {
+            self.free.push(self.inline[i * self.room].number());
         }
         self.len[i] = 0;
         if entries.len() > self.room {
@@ -184,7 +213,7 @@ impl<T: Entry> ListStore<T> {
         }
         let (list, _) = self.room_mut(i);
         list[..entries.len()].copy_from_slice(entries);
-        self.len[i] |= entries.len() as u32;
+        self.set_len(i, entries.len());
     }
 
     /// Empty every list.
@@ -199,17 +228,14 @@ impl<T: Entry> ListStore<T> {
         if spilled {
             self.widen_spill();
         } else {
-            let (_, n) = self.where_is(i);
-            self.spill_out(i, n + 1);
+            self.spill_out(i, self.len[i] as usize + 1);
         }
     }
 
     /// Half as much room again in every spill slot.
     fn widen_spill(&mut self) {
-        let (old, room) = (
-            self.spill_room,
-            self.spill_room + self.spill_room.div_ceil(2),
-        );
+        let old = self.spill_room;
+        let room = old + (old - 1).div_ceil(2);
         let slots = self.spill.len() / old;
         widen_rooms(&mut self.spill, slots, |_| old, (old, room));
         self.spill_room = room;
@@ -221,14 +247,14 @@ impl<T: Entry> ListStore<T> {
     /// line by a quarter instead.
     fn spill_out(&mut self, i: usize, need: usize) {
         let slots = self.spill.len() / self.spill_room;
-        if 16 * (slots - self.free.len() + 1) > self.len.len() {
-            let room = self.room + self.room.div_ceil(4);
+        if 16 * (slots - self.free.len() + 1) > self.len.len() && self.room < MOST_IN_LINE {
+            let room = (self.room + self.room.div_ceil(4)).min(MOST_IN_LINE);
             let (len, old) = (&self.len, self.room);
             widen_rooms(
                 &mut self.inline,
                 len.len(),
                 |k| match len[k] {
-                    l if l & SPILLED != 0 => 1,
+                    SPILLED => 1,
                     l => l as usize,
                 },
                 (old, room),
@@ -238,7 +264,7 @@ impl<T: Entry> ListStore<T> {
                 return;
             }
         }
-        while self.spill_room < need {
+        while self.spill_room - 1 < need {
             self.widen_spill();
         }
         let slot = self.free.pop().unwrap_or_else(|| {
@@ -248,9 +274,10 @@ impl<T: Entry> ListStore<T> {
         });
         let (at, n) = (i * self.room, self.len[i] as usize);
         let to = slot as usize * self.spill_room;
-        self.spill[to..to + n].copy_from_slice(&self.inline[at..at + n]);
-        self.inline[at] = T::from_slot(slot);
-        self.len[i] = SPILLED | n as u32;
+        self.spill[to] = T::from_number(n as u32);
+        self.spill[to + 1..to + 1 + n].copy_from_slice(&self.inline[at..at + n]);
+        self.inline[at] = T::from_number(slot);
+        self.len[i] = SPILLED;
     }
 }
 
@@ -265,7 +292,7 @@ impl ListStore<u32> {
             for k in at..n - 1 {
                 list[k] = list[k + 1];
             }
-            self.len[i] -= 1;
+            self.set_len(i, n - 1);
             self.settle(i);
         }
     }
@@ -274,13 +301,14 @@ impl ListStore<u32> {
     pub fn insert(&mut self, i: usize, e: u32) {
         // From the end, moving the larger entries up one: lists are short,
         // so this beats a search and a call to memmove.
-        let (list, mut at) = self.with_room_for_one(i);
+        let (list, n) = self.with_room_for_one(i);
+        let mut at = n;
         while at > 0 && list[at - 1] > e {
             list[at] = list[at - 1];
             at -= 1;
         }
         list[at] = e;
-        self.len[i] += 1;
+        self.set_len(i, n + 1);
     }
 }
 
@@ -358,7 +386,7 @@ mod tests {
                     truth[i] = new;
                 }
             }
-            spilled_seen += (store.len[i] & SPILLED != 0) as usize;
+            spilled_seen += (store.len[i] == SPILLED) as usize;
             if step % 997 == 0 {
                 reads_back(&store, &truth, step);
             }
@@ -369,6 +397,39 @@ mod tests {
         assert!(store.spill_room > first.1, "the spill slots widened");
         store.clear();
         assert!((0..lists).all(|k| store.get(k).is_empty()));
+    }
+
+    /// A list longer than a length byte can count lives in the spill store
+    /// whatever room in line was asked for, and comes back in line once it
+    /// is short enough.
+    #[test]
+    fn lists_longer_than_a_byte_counts_spill() {
+        let mut store = ListStore::<u32>::new(3, 1000);
+        assert_eq!(store.room, MOST_IN_LINE);
+        let long: Vec<u32> = (0..600).map(|k| 2 * k).collect();
+        store.set(1, &long);
+        store.insert(1, 7);
+        assert_eq!(store.len[1], SPILLED);
+        let mut truth = long.clone();
+        truth.insert(4, 7);
+        for e in (0..1200).step_by(4) {
+            store.remove(1, |x| x == e);
+            truth.retain(|&x| x != e);
+        }
+        assert_eq!(store.get(1), &truth[..]);
+        assert_eq!(
+            store.len[1],
+            SPILLED,
+            "{} entries stay spilled",
+            truth.len()
+        );
+        while truth.len() >= MOST_IN_LINE {
+            let e = truth.pop().unwrap();
+            store.remove(1, |x| x == e);
+        }
+        assert_eq!(store.len[1] as usize, truth.len(), "back in line");
+        assert_eq!(store.get(1), &truth[..]);
+        assert!(store.get(0).is_empty() && store.get(2).is_empty());
     }
 
     /// Points filed into cells and moved between them as the grid does
@@ -403,7 +464,7 @@ mod tests {
             store.push(c, e);
             truth[c].push(e);
             home[p] = Some(c);
-            spilled_seen += (store.len[c] & SPILLED != 0) as usize;
+            spilled_seen += (store.len[c] == SPILLED) as usize;
             if step % 991 == 0 {
                 reads_back(&store, &truth, step);
             }
@@ -411,7 +472,7 @@ mod tests {
         reads_back(&store, &truth, 40_000);
         assert!(spilled_seen > 100, "cells spilled {spilled_seen} times");
         let in_use = store.spill.len() / store.spill_room - store.free.len();
-        let spilled = store.len.iter().filter(|&&l| l & SPILLED != 0).count();
+        let spilled = store.len.iter().filter(|&&l| l == SPILLED).count();
         assert_eq!(in_use, spilled, "every slot not in use is free");
     }
 }
