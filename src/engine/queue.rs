@@ -197,10 +197,10 @@ impl<P: Copy + Default> EventQueue<P> {
         }
         if self.walks && b > self.current {
             self.defer(i, t, r);
-            return;
+        } else {
+            self.remove(i);
+            self.file(i, t, b);
         }
-        self.remove(i);
-        self.file(i, t, b);
         if self.heap.is_empty() {
             self.file_every_deferred();
             self.refill();
@@ -225,10 +225,6 @@ impl<P: Copy + Default> EventQueue<P> {
         }
         self.record[i].time = t;
         self.deferred[0].push(i as u32);
-        if self.heap.is_empty() {
-            self.file_every_deferred();
-            self.refill();
-        }
     }
 
     /// File every deferred event: the heap is about to move on to the next
@@ -243,17 +239,16 @@ impl<P: Copy + Default> EventQueue<P> {
     /// of the list head each event deferred since will go in front of.
     #[inline(always)]
     fn file_deferred(&mut self) {
-        let [young, old] = &mut self.deferred;
-        std::mem::swap(young, old);
-        let ready = std::mem::take(&mut self.deferred[0]);
+        let young = std::mem::take(&mut self.deferred[0]);
+        let mut ready = std::mem::replace(&mut self.deferred[1], young);
         for &i in &ready {
             let i = i as usize;
             let t = self.record[i].time;
             self.remove(i);
             self.file(i, t, self.bucket(t));
         }
+        ready.clear();
         self.deferred[0] = ready;
-        self.deferred[0].clear();
         for &i in &self.deferred[1] {
             let list = self.list_of(self.bucket(self.record[i as usize].time));
             if let Some(r) = self
