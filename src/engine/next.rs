@@ -110,6 +110,7 @@ pub(super) struct Event {
     pub next: Packed,
     pub stamp: u32,
 }
+const _: () = assert!(std::mem::size_of::<Event>() == 16);
 
 #[cfg(test)]
 mod tests {

@@ -109,13 +109,20 @@ impl<T: Entry> ListStore<T> {
                 room: self.room,
             };
         }
-        let slot = self.inline[i * self.room].number() as usize * self.spill_room;
+        let slot = self.slot(i) as usize * self.spill_room;
         Place {
             spilled: true,
             at: slot + 1,
             n: self.spill[slot].number() as usize,
             room: self.spill_room - 1,
         }
+    }
+
+    /// The spill slot of list i, which lives in the spill store: its number
+    /// takes the place of the list's first entry in line.
+    #[inline(always)]
+    fn slot(&self, i: usize) -> u32 {
+        self.inline[i * self.room].number()
     }
 
     #[inline(always)]
@@ -141,7 +148,7 @@ impl<T: Entry> ListStore<T> {
     #[inline(always)]
     fn set_len(&mut self, i: usize, n: usize) {
         if self.len[i] == SPILLED {
-            let slot = self.inline[i * self.room].number() as usize;
+            let slot = self.slot(i) as usize;
             self.spill[slot * self.spill_room] = T::from_number(n as u32);
         } else {
             self.len[i] = n as u8;
@@ -195,8 +202,8 @@ impl<T: Entry> ListStore<T> {
     fn settle(&mut self, i: usize) {
         let p = self.place(i);
         if p.spilled && p.n < self.room {
+            self.free.push(self.slot(i));
             let at = i * self.room;
-            self.free.push(self.inline[at].number());
             self.inline[at..at + p.n].copy_from_slice(&self.spill[p.at..p.at + p.n]);
             self.len[i] = p.n as u8;
         }
@@ -205,7 +212,7 @@ impl<T: Entry> ListStore<T> {
     /// Make list i `entries`.
     pub fn set(&mut self, i: usize, entries: &[T]) {
         if self.len[i] == SPILLED {
-            self.free.push(self.inline[i * self.room].number());
+            self.free.push(self.slot(i));
         }
         self.len[i] = 0;
         if entries.len() > self.room {
