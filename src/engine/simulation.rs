@@ -22,7 +22,7 @@ use super::neighbours::{Image, Neighbourhood, PLANE, image_shift, no_shift, sepa
 use super::next::{Event, Next, Packed};
 use super::observer::{Observer, PairCollision, Snapshot, WallHit};
 use super::particle::Particle;
-use super::prefetch::{Lines, prefetch};
+use super::prefetch::{Lines, Read, prefetch, prefetch_for};
 use super::queue::EventQueue;
 use super::thermal;
 use super::vector::{Vector, axis0, dot, norm2, sub};
@@ -215,7 +215,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             if let Some((i, t)) = self.queue.peek() {
                 prefetch(self.queue.what(i));
                 prefetch(&self.particles[i]);
-                self.neighbours.prefetch(i);
+                self.neighbours.prefetch(i, Read::Soon);
                 if ask_ahead {
                     self.ask_ahead(i, t);
                 }
@@ -254,26 +254,27 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
     /// the next event (particle i at time t, whose own records were asked
     /// for an event ago) ask for what its second stage will read (its
     /// partner's records and its own partners' bodies, or the cells of its
-    /// renewal); for the one after it, its records.
+    /// renewal); for the one after it, its records. All of it into L2 only,
+    /// so that it holds none of the core's L1 miss buffers (`Read::Later`).
     fn ask_ahead(&mut self, i: usize, t: f64) {
         match self.next(i) {
             Next::Pair { j, .. } => {
                 let j = j as usize;
                 // The collision moves j's stamp on and reschedules j.
-                prefetch(self.queue.what(j));
-                prefetch(&self.particles[j]);
-                self.neighbours.prefetch(j);
+                prefetch_for(self.queue.what(j), Read::Later);
+                prefetch_for(&self.particles[j], Read::Later);
+                self.neighbours.prefetch(j, Read::Later);
                 for (k, _) in self.neighbours.candidates(i) {
-                    prefetch(&self.particles[k]);
+                    prefetch_for(&self.particles[k], Read::Later);
                 }
             }
             Next::Renew => self.neighbours.prefetch_renewal(i, &self.particles[i], t),
             _ => {}
         }
         if let Some(k) = self.queue.peek_second() {
-            prefetch(self.queue.what(k));
-            prefetch(&self.particles[k]);
-            self.neighbours.prefetch(k);
+            prefetch_for(self.queue.what(k), Read::Later);
+            prefetch_for(&self.particles[k], Read::Later);
+            self.neighbours.prefetch(k, Read::Later);
         }
     }
 
@@ -316,7 +317,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             // j's list was asked for an event ago: its partners' bodies load
             // while the collision is done and i is predicted.
             for (k, _) in self.neighbours.candidates(j) {
-                prefetch(&self.particles[k]);
+                prefetch_for(&self.particles[k], Read::Later);
             }
         }
         self.particles[i].advance_to(now);
@@ -359,7 +360,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         self.move_stamp_on(i);
         self.move_stamp_on(j);
         // j's list and centre load while i is predicted.
-        self.neighbours.prefetch(j);
+        self.neighbours.prefetch(j, Read::Soon);
         self.predict(i);
         self.predict(j);
     }

@@ -14,6 +14,7 @@ use super::Image;
 use super::centres::{FINE, MAX_CELLS, WITHIN};
 use super::store::{ListStore, room_for};
 use crate::engine::boundary::SimBox;
+use crate::engine::prefetch::Read;
 use crate::engine::vector::{Vector, norm2};
 
 /// A filed point: its index in the low `INDEX_BITS` bits, then `FINE` bits
@@ -65,7 +66,7 @@ pub struct Grid<const D: usize> {
     /// Each cell's points, with room in line for a little more than a
     /// cell's share (a fuller cell spills, see `store.rs`). A cell's place
     /// is computed, not read from a header, so a search can ask for all its
-    /// cells' points at once (see `cells_around`).
+    /// cells' points at once (see `prefetch_cells`).
     cells: ListStore<Point>,
     /// See [`Grid::rounding`].
     rounding: f64,
@@ -168,30 +169,36 @@ impl<const D: usize> Grid<D> {
         self.members(near.cell)
     }
 
-    /// Start loading these cells' points (and counts), all at once so that
-    /// their cache misses overlap (a hint; see prefetch.rs).
+    /// Start loading these cells' points (and counts), to be read `when`,
+    /// all at once so that their cache misses overlap (a hint; see
+    /// prefetch.rs). Each cell's place is known without reading anything
+    /// (but for the few cells that spilled).
     #[inline(always)]
-    pub fn prefetch_cells(&self, near: &[Near]) {
+    pub fn prefetch_cells(&self, near: &[Near], when: Read) {
         for cell in near {
-            self.cells.prefetch(cell.cell);
+            self.cells.prefetch(cell.cell, when);
         }
     }
 
     /// The (up to) 3^D cells around a centre (at `steps`, at position `x`;
     /// D <= 3) that may hold a point within `reach` of it (the centre's own
     /// point may be filed there too), into `near`, and how many there are.
-    /// (Written in place: returned, the array would be copied.)
+    /// (Written in place: returned, the array would be copied.) Their
+    /// points are asked for, to be read `when`.
     ///
     /// A cell is left out when its nearest face, edge or corner is beyond
     /// `reach` and twice the rounding (a corner cell, half the time, in 3D):
     /// a point in it is then more than `reach` and the rounding away, so the
     /// caller's search, widened by the rounding, would not have kept it.
+    // Inlined, so that each caller's `when` picks its hint at compile time.
+    #[inline]
     pub fn cells_around(
         &self,
         steps: &[u32; D],
         x: &Vector<D>,
         reach: f64,
         near: &mut [Near; 27],
+        when: Read,
     ) -> usize {
         // Per axis, the (up to) three neighbouring rows: their part of the
         // linear cell index, of the image code and of the packed offset
@@ -255,9 +262,7 @@ impl<const D: usize> Grid<D> {
                 break;
             }
         }
-        // Each cell's points lie elsewhere in memory, at a place known
-        // without reading anything (but for the few cells that spilled).
-        self.prefetch_cells(&near[..found]);
+        self.prefetch_cells(&near[..found], when);
         found
     }
 
@@ -369,7 +374,7 @@ mod tests {
             let c = at(&mut rng);
             let x: Vector<D> = std::array::from_fn(|k| (c[k] as f64 + 0.5) * step[k]);
             let mut near = [Near::default(); 27];
-            let count = grid.cells_around(&c, &x, reach, &mut near);
+            let count = grid.cells_around(&c, &x, reach, &mut near, Read::Soon);
             kept_cells += count;
             let mut seen = vec![None; points.len()];
             for cell in &near[..count] {

@@ -27,7 +27,7 @@ use super::{Image, Neighbourhood, PLANE, Persist};
 use crate::engine::bodies::Body;
 use crate::engine::boundary::{SimBox, ball_volume};
 use crate::engine::particle::Particle;
-use crate::engine::prefetch::{Lines, prefetch};
+use crate::engine::prefetch::{Lines, Read, prefetch_for};
 use crate::engine::vector::{Vector, add_scaled, axis0, dot, norm2, sub};
 
 /// A list entry packs a particle index and an image code: `j << 5 | image`.
@@ -251,13 +251,15 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
                     near,
                     count,
                 } if s == steps => {
-                    // Asked for an event ago, not all are in the nearest
-                    // cache yet: asking again starts them all moving at once.
-                    self.grid.prefetch_cells(&near[..*count]);
+                    // Asked for an event ago, into L2: asking again brings
+                    // them all on to L1 at once.
+                    self.grid.prefetch_cells(&near[..*count], Read::Soon);
                     &near[..*count]
                 }
                 _ => {
-                    let count = self.grid.cells_around(steps, c, reach, &mut own);
+                    let count = self
+                        .grid
+                        .cells_around(steps, c, reach, &mut own, Read::Soon);
                     &own[..count]
                 }
             };
@@ -304,14 +306,14 @@ impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
         self.find(i, &mut new, &mut unsorted);
         if let Some(bodies) = bodies {
             for &e in &new {
-                bodies.ask(unpack(e).0);
+                bodies.ask(unpack(e).0, Read::Later);
             }
         }
         self.differences(i, &new, &mut changes);
         // Every list the changes touch asked for at once, so that the misses
         // on these scattered lists overlap; the changes wait for `catch_up`.
         for &(j, _) in &changes {
-            self.lists.prefetch(j);
+            self.lists.prefetch(j, Read::Soon);
         }
         if PLANES && Some(i) == self.plane {
             self.plane_list.clear();
@@ -452,9 +454,9 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
 
     /// List i's length, its centre and the two ends of its room (a hint).
     #[inline(always)]
-    fn prefetch(&self, i: usize) {
-        self.lists.prefetch(i);
-        prefetch(self.centre.steps(i));
+    fn prefetch(&self, i: usize, when: Read) {
+        self.lists.prefetch(i, when);
+        prefetch_for(self.centre.steps(i), when);
     }
 
     /// The cells around where p will renew at t, kept for its search.
@@ -475,6 +477,7 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
             &self.centre.position(&steps),
             reach,
             &mut ahead.near,
+            Read::Later,
         );
         ahead.steps = Some(steps);
     }

@@ -14,7 +14,7 @@ pub use lists::NeighbourList;
 use super::bodies::Body;
 use super::boundary::SimBox;
 use super::particle::Particle;
-use super::prefetch::Lines;
+use super::prefetch::{Lines, Read};
 use super::vector::Vector;
 
 /// Which periodic image of a partner: per axis an offset in {-1, 0, +1}
@@ -76,9 +76,9 @@ pub trait Neighbourhood<const D: usize>: Sized + Clone + Send {
     fn can_reach_wall(&self, _i: usize, _high: bool) -> bool {
         true
     }
-    /// Start loading i's neighbourhood, which is about to be read (a hint).
+    /// Start loading i's neighbourhood, which will be read `when` (a hint).
     #[inline(always)]
-    fn prefetch(&self, _i: usize) {}
+    fn prefetch(&self, _i: usize, _when: Read) {}
     /// Start loading what renewing `p` (particle i) at time `t` will read
     /// (a hint; what it works out to ask may be kept for the renewal).
     #[inline(always)]

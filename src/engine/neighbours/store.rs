@@ -14,7 +14,7 @@
 //! caches waits on the list's own line and not on its length's too. A
 //! spilled list's length is the first word of its slot.
 
-use crate::engine::prefetch::prefetch;
+use crate::engine::prefetch::{Read, prefetch_for};
 
 /// A list's length byte when the list lives in the spill store.
 const SPILLED: u8 = u8::MAX;
@@ -158,12 +158,12 @@ impl<T: Entry> ListStore<T> {
     /// List i's length and the two ends of its room in line (a hint: its
     /// place is computed, not read, so many can be asked for at once).
     #[inline(always)]
-    pub fn prefetch(&self, i: usize) {
-        prefetch(&self.len[i]);
+    pub fn prefetch(&self, i: usize, when: Read) {
+        prefetch_for(&self.len[i], when);
         let room = self.inline.get(i * self.room..(i + 1) * self.room);
         if let Some((first, last)) = room.and_then(|r| r.first().zip(r.last())) {
-            prefetch(first);
-            prefetch(last);
+            prefetch_for(first, when);
+            prefetch_for(last, when);
         }
     }
 
