@@ -8,12 +8,14 @@
 //! change a trajectory. It takes a reference, so it only ever names live data.
 //!
 //! A line from memory takes ~170 ns, and while it comes it holds one of
-//! the core's L1 miss buffers (about 20). What the event loop asks for an
-//! event ahead, or a stage before it is read, goes into L2 only ([`Read::Later`]):
-//! it has time to arrive, and the buffers stay free for the lines the core
-//! is waiting on now. Asked for again just before it is read, it comes into
-//! L1 from L2 in a few ns. With 10^6 spheres that made a collision 4-13 %
-//! cheaper than asking for everything into L1 (see docs/performance.md).
+//! the core's L1 miss buffers (about twenty: `cargo bench --bench memory`
+//! gains nothing beyond 24 lines in flight). What the event loop asks for
+//! an event ahead, or a stage before it is read, goes into L2 only
+//! ([`Read::Later`]): it has time to arrive, and the buffers stay free for
+//! the lines the core is waiting on now. Asked for again just before it is
+//! read, it comes on to L1 from L2 in a few ns. With 10^6 spheres that made
+//! a collision ~9 % cheaper than asking for everything into L1 (see
+//! docs/performance.md).
 
 /// When a hinted line will be read, which decides the cache it is brought to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
