@@ -1,5 +1,5 @@
 //! Pressure from the collision virial, any boundary:
-//! P V = (2/d) <K> + (1/(d t)) sum over collisions of r_ij . dp_i.
+//! `P V = (2/d) <K> + (1/(d t)) sum over collisions of r_ij . dp_i`.
 
 use super::{Context, Entry, Kind, Measure, Observable, Part, Setup, StateIn, StateOut};
 use crate::engine::{Observer, PairCollision, Snapshot};

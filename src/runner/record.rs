@@ -23,7 +23,7 @@ pub struct RunRecord {
     /// Hash of what the run did (see `runner::fingerprint`): a saved run is
     /// reused only if this plan would run exactly the same.
     pub fingerprint: String,
-    /// "ok" or "failed: <message>".
+    /// `"ok"` or `"failed: <message>"`.
     pub status: String,
     pub output: RunOutput,
 }

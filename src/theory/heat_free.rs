@@ -12,7 +12,7 @@
 //!   flight time L / u (u the emitted normal speed, a Rayleigh law) and
 //!   a(t) = E[energy; flight longer than t];
 //! - so E(t) = A0(t) + int_0^t h(t - s) dG(s), G the law of t1 and
-//!   A0(t) = E[starting energy; t1 > t].
+//!   `A0(t) = E[starting energy; t1 > t]`.
 
 /// Mean energy per particle at times 0, dt, 2 dt, ... (`steps` + 1 values),
 /// the renewal equation solved on that grid (error O(dt)).

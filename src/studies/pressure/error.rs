@@ -5,7 +5,7 @@
 //! virials b = σ|Δp|, the mean over a time T would scatter by
 //! (Z − 1) sqrt((1 + cv²) / (R T)), cv the relative spread of b. At contact
 //! the normal relative speed of a colliding pair is Rayleigh distributed
-//! (flux-weighted Gaussian), so 1 + cv² = <v²>/<v>² = 4/π in any dimension,
+//! (flux-weighted Gaussian), so 1 + cv² = `<v²>/<v>²` = 4/π in any dimension,
 //! and the exact relation between collision rate and pressure,
 //! Z − 1 = Γ σ sqrt(π m / kT) / (2d) with Γ = 2R/N the collisions per
 //! particle per unit time, gives R. Together, in units of σ, m and kT:
