@@ -101,12 +101,14 @@ class Browser:
         self.next_id = 0
         self.events = []
 
-    def send(self, method, params=None, session=None):
-        """Send one command and wait for its answer; events seen meanwhile are kept."""
+    def send(self, method, params=None, route=None):
+        """Send one command (to a page, if `route` is given: see `attach`) and
+        wait for its answer; events seen meanwhile are kept."""
         self.next_id += 1
         message = {"id": self.next_id, "method": method, "params": params or {}}
-        if session:
-            message["sessionId"] = session
+        if route:
+            key, value = route
+            message[key] = value
         os.write(self.to_chrome, json.dumps(message).encode() + b"\0")
         while True:
             reply = self.receive()
@@ -125,13 +127,22 @@ class Browser:
         message, self.buffer = self.buffer.split(b"\0", 1)
         return json.loads(message)
 
-    def wait_for(self, method, session):
+    def attach(self, target):
+        """Attach to a page target in flat mode: commands to the page and its
+        events carry the id Target.attachToTarget answers with, under the key
+        of that answer's one field. Returns that (key, id) pair."""
+        reply = self.send("Target.attachToTarget", {"targetId": target, "flatten": True})
+        [(key, value)] = reply.items()
+        return key, value
+
+    def wait_for(self, method, route):
+        key, value = route
         for i, event in enumerate(self.events):
-            if event.get("method") == method and event.get("sessionId") == session:
+            if event.get("method") == method and event.get(key) == value:
                 return self.events.pop(i)
         while True:
             event = self.receive()
-            if event.get("method") == method and event.get("sessionId") == session:
+            if event.get("method") == method and event.get(key) == value:
                 return event
             self.events.append(event)
 
@@ -150,19 +161,19 @@ class Browser:
 def check(browser, page, screenshot):
     """The problems a reader would meet on `page`; writes its screenshot."""
     target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
-    session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+    route = browser.attach(target)
     for domain in ("Page", "Runtime", "Log", "Network"):
-        browser.send(f"{domain}.enable", session=session)
+        browser.send(f"{domain}.enable", route=route)
     browser.send("Emulation.setDeviceMetricsOverride",
                  {"width": WIDTH, "height": HEIGHT, "deviceScaleFactor": 1, "mobile": False},
-                 session=session)
+                 route=route)
     browser.events.clear()
-    browser.send("Page.navigate", {"url": "file://" + os.path.abspath(page)}, session=session)
-    browser.wait_for("Page.loadEventFired", session)
+    browser.send("Page.navigate", {"url": "file://" + os.path.abspath(page)}, route=route)
+    browser.wait_for("Page.loadEventFired", route)
     probe = browser.send("Runtime.evaluate",
                          {"expression": PROBE, "returnByValue": True, "awaitPromise": True},
-                         session=session)["result"]["value"]
-    shot = browser.send("Page.captureScreenshot", {"format": "png"}, session=session)
+                         route=route)["result"]["value"]
+    shot = browser.send("Page.captureScreenshot", {"format": "png"}, route=route)
     with open(screenshot, "wb") as f:
         f.write(base64.b64decode(shot["data"]))
 
