@@ -11,7 +11,7 @@ use crate::runner::origin::Origin;
 use crate::runner::pipeline::{self, CollectOptions, Slice, StudyOptions};
 use crate::runner::plan;
 use crate::runner::progress::{ProgressMode, human_duration};
-use crate::runner::run::SimulateFn;
+use crate::runner::run::{SimulateFn, Subset};
 use crate::runner::shard::{self, Shard};
 use crate::runner::slurm::{self, SlurmJob};
 use crate::runner::status::{self, cpu_hours};
@@ -84,6 +84,11 @@ struct RunArgs {
     /// Discard runs saved by an earlier, interrupted invocation instead of resuming.
     #[arg(long)]
     fresh: bool,
+    /// Delete saved runs this plan does not have (kept otherwise: fewer
+    /// replicas, a sweep value removed), and replace saved runs that another
+    /// descriptor made (refused otherwise).
+    #[arg(long)]
+    prune: bool,
     /// Write into --out even if it is a non-empty folder that is not a
     /// study's output (bonkers still touches only names it makes itself).
     #[arg(long)]
@@ -229,6 +234,7 @@ fn run(
         replicas: a.plan.replicas,
         quick: a.plan.quick,
         fresh: a.fresh,
+        prune: a.prune,
         progress: if a.quiet {
             ProgressMode::Quiet
         } else {
@@ -413,6 +419,15 @@ fn slurm_job(a: &SlurmArgs) -> Result<i32, StudyError> {
         );
     }
     crate::runner::outdir::check(&out, a.force)?;
+    // So `study status OUT` knows the plan before any task has started.
+    let origin = Origin::new(
+        &a.plan.file,
+        &loaded,
+        a.plan.quick,
+        a.plan.replicas,
+        a.plan.yes,
+    );
+    pipeline::guard(&specs, Subset::All, &out, &origin)?;
     let study = std::env::current_exe()
         .map_err(|e| StudyError::Other(anyhow::anyhow!("cannot find the study executable: {e}")))?;
     let job = SlurmJob {
@@ -431,14 +446,6 @@ fn slurm_job(a: &SlurmArgs) -> Result<i32, StudyError> {
         checkpoint_every: a.checkpoint_every,
     };
     let (shards_path, collect_path) = job.write()?;
-    // So `study status OUT` knows the plan before any task has started.
-    let origin = Origin::new(
-        &a.plan.file,
-        &loaded,
-        a.plan.quick,
-        a.plan.replicas,
-        a.plan.yes,
-    );
     crate::runner::origin::save(&job.out, &origin)?;
     let seconds = shard::estimated_seconds(&specs);
     let loads = shard::loads(&seconds, &shard::deal(&seconds, a.shards), a.shards);

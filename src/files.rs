@@ -74,7 +74,7 @@ pub fn sync_dir(dir: &Path) -> anyhow::Result<()> {
 
 /// `.<name>.<pid>-<n>.tmp` beside `path`: unique per process and write, so
 /// two writers never share a temporary file.
-fn temp_name(path: &Path) -> PathBuf {
+pub fn temp_name(path: &Path) -> PathBuf {
     static NEXT: AtomicU64 = AtomicU64::new(0);
     let n = NEXT.fetch_add(1, Ordering::Relaxed);
     let name = path.file_name().unwrap_or_default().to_string_lossy();

@@ -1,25 +1,36 @@
 //! What bonkers touches in an output folder (OUT), and how it reads there.
 //!
 //! An output folder may be shared with the user's own files, and anyone who
-//! can write into it can plant links there. So bonkers:
-//! - writes and removes only names it makes itself: `.study.lock`,
-//!   `.shard-K-of-N.lock`, `.study.json`, `runs/` with `run-<digits>.json`
-//!   and `run-<digits>.ckpt` in it, `slurm/`, `.staging-<digits>/`, its
-//!   temporary files `.<name>.<digits>-<digits>.tmp`, and the outputs a
-//!   study publishes (tables, plots, report, `manifest.json`);
-//! - refuses a non-empty folder that is not a study's output unless the
-//!   user says `--force` (`check`);
+//! can write into it can plant links. So bonkers:
+//! - writes only names it makes itself: `.study.lock`, `.shard-K-of-N.lock`,
+//!   `.study.json`, `runs/` with `run-<digits>.json` and `run-<digits>.ckpt`
+//!   in it, `slurm/`, `.staging-<digits>/`, `.outputs` and `.outputs-<n>/`,
+//!   its temporary files `.<name>.<digits>-<digits>.tmp`, and the outputs a
+//!   study publishes (tables, plots, report, `manifest.json`: `publish.rs`);
+//! - takes a folder as a study's only if bonkers marked it so: its
+//!   `.study.json` (every `study run` writes one before it runs), or the
+//!   `manifest.json` of a bonkers from before `.study.json`; a name pattern
+//!   is no proof. Any other non-empty folder (bar one holding only the
+//!   locks bonkers leaves) is refused unless the user says `--force`
+//!   (`check`);
+//! - removes only its own leftovers, by exact name: temporary files, and
+//!   staging and set folders only if they hold the marker bonkers made in
+//!   them and no live process holds it, and then only the names it wrote
+//!   there (`publish::clear`); records and checkpoints of runs a plan does
+//!   not have only with `--prune` (`run.rs`);
 //! - never follows a symbolic link inside OUT: a link where a folder or lock
 //!   of its own belongs is refused, a link where a file it replaces belongs
 //!   (a record, a checkpoint, a table) is replaced by a rename, never written
 //!   through; files are read with no-follow opens and a size limit
 //!   (`read_own`), so a link to `/dev/zero` or a pipe cannot hang a run.
+//!   (The published names are bonkers' own links into the current set:
+//!   `publish.rs`.)
 
 use crate::descriptor::errors::DescriptorError;
 use crate::files::is_temporary;
 use crate::runner::lock::LOCK_FILE;
 use crate::runner::origin::ORIGIN_FILE;
-use crate::runner::publish::{MANIFEST, STAGING_PREFIX};
+use crate::runner::publish::{self, CURRENT, MANIFEST, STAGING_PREFIX};
 use anyhow::Context;
 use std::fs::{File, OpenOptions};
 use std::io::Read;
@@ -80,9 +91,12 @@ fn is_structural(name: &str) -> bool {
     [LOCK_FILE, ORIGIN_FILE, RUNS, SLURM].contains(&name) || is_shard_lock(name)
 }
 
-/// Names bonkers makes at the top of OUT before a study is published.
-fn is_working_name(name: &str) -> bool {
-    is_structural(name) || is_staging(name) || is_temporary(name)
+/// A lock file as bonkers leaves one: a small regular file of a lock's name
+/// (it holds a process id). A folder holding only these is as good as
+/// empty: bonkers deletes nothing there, and a lock keeps its file.
+fn is_own_lock(out: &Path, name: &str) -> bool {
+    (name == LOCK_FILE || is_shard_lock(name))
+        && std::fs::symlink_metadata(out.join(name)).is_ok_and(|m| m.is_file() && m.len() <= 64)
 }
 
 /// Check OUT before a command writes there: no links where its own folders
@@ -121,14 +135,23 @@ pub fn check(out: &Path, force: bool) -> Result<(), DescriptorError> {
             return Err(refuse(&path, what).hint("move it away, or give another --out"));
         }
     }
+    let current = out.join(CURRENT);
+    if std::fs::symlink_metadata(&current).is_ok_and(|m| !m.file_type().is_symlink()) {
+        return Err(refuse(
+            &current,
+            "is not the link bonkers keeps there (to the current set of outputs)",
+        )
+        .hint("move it away, or give another --out"));
+    }
     check_runs(&out.join(RUNS))?;
-    if force || names.is_empty() || is_study_output(out) {
+    if force || is_study_output(out) {
         return Ok(());
     }
-    let foreign: Vec<&String> = names.iter().filter(|n| !is_working_name(n)).collect();
+    let mut foreign: Vec<&String> = names.iter().filter(|n| !is_own_lock(out, n)).collect();
     if foreign.is_empty() {
         return Ok(());
     }
+    foreign.sort();
     let shown: Vec<String> = foreign.iter().take(3).map(|n| format!("`{n}`")).collect();
     let more = match foreign.len() {
         n if n > 3 => format!(" and {} more", n - 3),
@@ -137,11 +160,11 @@ pub fn check(out: &Path, force: bool) -> Result<(), DescriptorError> {
     Err(refuse(
         out,
         &format!(
-            "is not empty and is not the output folder of a study (it has no {ORIGIN_FILE}): it holds {}{more}, which bonkers did not make",
+            "is not empty and is not the output folder of a study (it has no {ORIGIN_FILE}, which every study writes first): it holds {}{more}",
             shown.join(", ")
         ),
     )
-    .hint("give a new or empty --out, or pass --force to write there anyway: bonkers then writes and removes only names it makes itself (docs/descriptor.md, \"What bonkers touches in OUT\")"))
+    .hint("give a new or empty --out, or pass --force to write there anyway: bonkers then writes only names it makes itself and removes nothing it did not write (docs/descriptor.md, \"What bonkers touches in OUT\")"))
 }
 
 /// No folder where a record or checkpoint belongs: bonkers would neither
@@ -287,24 +310,27 @@ pub fn read_own_text(path: &Path, limit: u64) -> Result<String, Unusable> {
         .map_err(|_| Unusable::Refused(format!("{} is not UTF-8 text", path.display())))
 }
 
-/// Remove what an interrupted or killed run left in OUT: its staging
-/// folders and temporary files, by their exact names (a link of such a
-/// name is removed, never followed). Only call this holding OUT's lock.
+/// Remove what an interrupted or killed run left in OUT: its temporary
+/// files and links of a staging folder's name (the link, never what it
+/// points at), its staging folders and sets no longer current as
+/// `publish::clear` allows, and links of outputs the current set lacks.
+/// Only call this holding OUT's lock.
 pub fn remove_leftovers(out: &Path) -> anyhow::Result<()> {
     let entries =
         std::fs::read_dir(out).with_context(|| format!("cannot list {}", out.display()))?;
     for entry in entries.flatten() {
         let name = entry.file_name().to_string_lossy().into_owned();
         let path = entry.path();
-        let folder = entry.file_type().is_ok_and(|t| t.is_dir());
-        if is_staging(&name) && folder {
-            std::fs::remove_dir_all(&path)
-                .with_context(|| format!("cannot remove {}", path.display()))?;
-        } else if (is_staging(&name) || is_temporary(&name)) && !folder {
+        let Ok(kind) = entry.file_type() else {
+            continue;
+        };
+        if is_staging(&name) && (kind.is_dir() || kind.is_symlink()) {
+            publish::clear(&path)?;
+        } else if is_temporary(&name) && !kind.is_dir() {
             remove_if_present(&path)?;
         }
     }
-    Ok(())
+    publish::tidy(out)
 }
 
 /// Remove the file (or link) `path`, if there is one.

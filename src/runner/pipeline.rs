@@ -31,6 +31,9 @@ pub struct StudyOptions {
     pub replicas: Option<u32>,
     pub quick: bool,
     pub fresh: bool,
+    /// Delete records of runs the plan does not have, and let the plan
+    /// replace saved runs another descriptor made (`guard`).
+    pub prune: bool,
     pub progress: ProgressMode,
     /// Confirm plans of more than `CONFIRM_ABOVE` runs.
     pub yes: bool,
@@ -289,9 +292,13 @@ fn compute(
     simulate: &SimulateFn<'_>,
     stop: &AtomicBool,
 ) -> Result<(RunnerReport, f64), StudyError> {
+    if !options.prune {
+        guard(&planned.specs, subset, &planned.out_dir, &planned.origin)?;
+    }
     let runner_options = RunnerOptions {
         threads: options.threads,
         fresh: options.fresh,
+        prune: options.prune,
         progress: options.progress,
         shared: claim == Claim::Shared,
         checkpoint_every: match options.checkpoint_every {
@@ -314,6 +321,51 @@ fn compute(
         return Err(StudyError::Interrupted(report.kept()));
     }
     Ok((report, clock.elapsed().as_secs_f64()))
+}
+
+/// Refuse to run a plan other than the one OUT's `.study.json` saved if
+/// that would replace successful runs it made (another descriptor: their
+/// fingerprints differ): they cost CPU hours, so only `--prune` (or
+/// another --out) does that. The same plan passes at once: its saved runs
+/// that do not match were made by another bonkers version, and run again.
+/// (`study slurm` asks the same before it writes its scripts.)
+pub fn guard(
+    specs: &[RunSpec],
+    subset: Subset<'_>,
+    out: &Path,
+    ours: &Origin,
+) -> Result<(), StudyError> {
+    let saved = origin::load(out).ok();
+    if saved.as_ref().is_some_and(|o| same_plan(o, ours)) {
+        return Ok(());
+    }
+    let replaced = run::replaced(specs, subset, out)?;
+    let Some(first) = replaced.first() else {
+        return Ok(());
+    };
+    let whose = match &saved {
+        Some(o) => format!(
+            "the plan its {} saved ({}{}{})",
+            origin::ORIGIN_FILE,
+            shell_word(&o.file.to_string_lossy()),
+            if o.quick { " --quick" } else { "" },
+            o.replicas
+                .map_or(String::new(), |n| format!(" --replicas {n}"))
+        ),
+        None => "another descriptor".to_string(),
+    };
+    let what = format!(
+        "holds {} successful runs of {whose} whose settings differ from this plan's (e.g. {first}); running this plan would replace them",
+        replaced.len()
+    );
+    Err(DescriptorError::new(&out.display().to_string(), what)
+        .hint("give this plan another --out (`--quick` alone writes to reports/<name>-quick/), or pass --prune to replace them (and delete the records of runs this plan does not have)")
+        .into())
+}
+
+/// Two origins plan the same runs (where the descriptor file lies aside).
+fn same_plan(a: &Origin, b: &Origin) -> bool {
+    (&a.text, a.quick, a.replicas) == (&b.text, b.quick, b.replicas)
 }
 
 /// Run the study at `path`: its whole plan, then collect. Completed runs
@@ -463,9 +515,23 @@ pub fn collect_folder(
 /// Copy into the plan's folder the records of `other` it lacks, once
 /// `other` is shown to hold the same plan and no shard is writing there.
 fn join_records(planned: &Planned, other: &Path) -> Result<(), StudyError> {
+    let same = |a: &Path, b: &Path| {
+        a.canonicalize()
+            .is_ok_and(|a| b.canonicalize().is_ok_and(|b| a == b))
+    };
+    if same(other, &planned.out_dir) {
+        return Err(DescriptorError::new(
+            &other.display().to_string(),
+            format!(
+                "is the folder collected into ({}): it cannot be joined into itself",
+                planned.out_dir.display()
+            ),
+        )
+        .hint("give as MORE only other folders, e.g. `study collect DIR SHARD1 SHARD2`")
+        .into());
+    }
     let theirs = origin::load(other)?;
-    let ours = &planned.origin;
-    if (&theirs.text, theirs.quick, theirs.replicas) != (&ours.text, ours.quick, ours.replicas) {
+    if !same_plan(&theirs, &planned.origin) {
         return Err(DescriptorError::new(
             &other.display().to_string(),
             format!(

@@ -5,6 +5,9 @@
 //! panicking run is recorded and the others go on. A call computes the whole
 //! plan or a subset of it and leaves the other runs' records alone, so
 //! invocations that split a plan between them add up to one whole run.
+//! Records cost CPU hours: those of runs the plan does not have (fewer
+//! replicas, a sweep value removed, `--quick`) are kept and said, and
+//! deleted only with `--prune`.
 
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
@@ -29,8 +32,14 @@ pub type SimulateFn<'a> = dyn Fn(&RunSpec) -> anyhow::Result<RunOutput> + Sync +
 pub struct RunnerOptions {
     /// Worker threads; None = all cores.
     pub threads: Option<usize>,
-    /// Discard saved runs first instead of resuming from them.
+    /// Discard the saved runs of the picked runs first instead of resuming
+    /// from them.
     pub fresh: bool,
+    /// Delete the records and checkpoints of runs the plan does not have
+    /// (unless `shared`), and replace saved runs of the plan that another
+    /// descriptor or bonkers version made (`pipeline` refuses those first
+    /// without it).
+    pub prune: bool,
     pub progress: ProgressMode,
     /// Other invocations (shards) may be writing into the same runs folder:
     /// remove nothing of theirs, neither their temporary files nor records
@@ -148,7 +157,8 @@ pub fn run_all(
 
 /// Run the runs of the plan `specs` that `subset` picks and that are not
 /// already saved. Records of the plan's other runs are kept, whatever
-/// `options.fresh` says; files of no planned run are removed.
+/// `options.fresh` says; files of no planned run are kept too, unless
+/// `options.prune` (and not `options.shared`).
 pub fn run_subset(
     specs: &[RunSpec],
     subset: Subset<'_>,
@@ -173,7 +183,7 @@ pub fn run_subset(
     let mut tidied = if options.shared {
         Tidied::default()
     } else {
-        tidy(specs, out_dir)?
+        tidy(specs, out_dir, options.prune)?
     };
 
     // Each saved record is read once, to learn whether it can be reused.
@@ -261,25 +271,11 @@ pub fn run_subset(
     })
 }
 
-/// `--fresh`: forget the saved records of the picked runs. For the whole plan
-/// that is every run file in the runs folder (records, checkpoints and
-/// their temporary files, by name: other files there stay); for a subset
-/// only its own, since the others may belong to another invocation sharing
-/// the folder.
+/// `--fresh`: forget the saved records and checkpoints of the picked runs
+/// (only theirs: records of runs this plan does not have stay, unless
+/// `--prune`, and so do other parts' records in a shared folder).
 fn discard(specs: &[RunSpec], picked: &[usize], out_dir: &Path) -> anyhow::Result<()> {
     let dir = runs_dir(out_dir);
-    if picked.len() == specs.len() {
-        let Ok(entries) = std::fs::read_dir(&dir) else {
-            return Ok(());
-        };
-        for entry in entries.flatten() {
-            let name = entry.file_name().to_string_lossy().into_owned();
-            if outdir::is_run_file(&name) && !entry.file_type().is_ok_and(|t| t.is_dir()) {
-                remove_if_present(&entry.path())?;
-            }
-        }
-        return Ok(());
-    }
     for &i in picked {
         remove_if_present(&run_file(out_dir, specs[i].seed))?;
         remove_checkpoint(&dir, specs[i].seed)?;
@@ -298,8 +294,11 @@ struct Tidied {
     /// Saved successful runs of planned seeds that another descriptor or
     /// bonkers version made: they are run again.
     mismatched: usize,
-    /// Run files of no planned run, removed.
+    /// Records of no planned run, removed (`--prune`) or kept (the first
+    /// few names shown).
     removed: usize,
+    kept: usize,
+    first_kept: Vec<String>,
     /// Saved records of planned runs that cannot be trusted (changed since
     /// written, no checksum, a link, ...), run again; why, for the first.
     unusable: usize,
@@ -334,15 +333,30 @@ impl Tidied {
                 self.removed
             ));
         }
+        if self.kept > 0 {
+            let more = match self.kept - self.first_kept.len() {
+                0 => String::new(),
+                n => format!(" and {n} more"),
+            };
+            parts.push(format!(
+                "kept {} records that are not in this plan ({}{more}); --prune deletes them",
+                self.kept,
+                self.first_kept.join(", ")
+            ));
+        }
         (!parts.is_empty()).then(|| parts.join("; "))
     }
 }
 
-/// Remove temporary files an interrupted writer left and run files (records
-/// and checkpoints) of no planned run, so the saved runs are those of this
-/// study. Only names bonkers makes (`outdir::is_run_file`) are touched; a
-/// link of such a name is removed, never followed.
-fn tidy(specs: &[RunSpec], out_dir: &Path) -> anyhow::Result<Tidied> {
+/// Names of kept records shown in the note.
+const SHOWN: usize = 3;
+
+/// Remove temporary files an interrupted writer left in the runs folder;
+/// records and checkpoints of no planned run are counted and kept, or with
+/// `prune` removed, so the saved runs are those of this study. Only names
+/// bonkers makes (`outdir::is_run_file`) are touched; a link of such a name
+/// is removed, never followed.
+fn tidy(specs: &[RunSpec], out_dir: &Path, prune: bool) -> anyhow::Result<Tidied> {
     let dir = runs_dir(out_dir);
     let planned: HashSet<PathBuf> = specs
         .iter()
@@ -351,6 +365,7 @@ fn tidy(specs: &[RunSpec], out_dir: &Path) -> anyhow::Result<Tidied> {
     let mut tidied = Tidied::default();
     let entries =
         std::fs::read_dir(&dir).with_context(|| format!("cannot list {}", dir.display()))?;
+    let mut kept = Vec::new();
     for entry in entries.flatten() {
         let path = entry.path();
         let name = entry.file_name().to_string_lossy().into_owned();
@@ -360,10 +375,42 @@ fn tidy(specs: &[RunSpec], out_dir: &Path) -> anyhow::Result<Tidied> {
         {
             continue;
         }
-        remove_if_present(&path)?;
-        tidied.removed += usize::from(outdir::is_record(&name));
+        let record = outdir::is_record(&name);
+        if prune || crate::files::is_temporary(&name) {
+            remove_if_present(&path)?;
+            tidied.removed += usize::from(record);
+        } else if record {
+            kept.push(name);
+        }
     }
+    kept.sort();
+    tidied.kept = kept.len();
+    tidied.first_kept = kept
+        .into_iter()
+        .take(SHOWN)
+        .map(|n| format!("runs/{n}"))
+        .collect();
     Ok(tidied)
+}
+
+/// The picked runs whose saved record succeeded but was made by another
+/// descriptor or bonkers version: running them would replace those records.
+/// Their file names, in plan order.
+pub fn replaced(
+    specs: &[RunSpec],
+    subset: Subset<'_>,
+    out_dir: &Path,
+) -> anyhow::Result<Vec<String>> {
+    let mut names = Vec::new();
+    for i in subset.pick(specs)? {
+        if let Stored::Found(record) = read_record(out_dir, &specs[i])
+            && record.ok()
+            && record.fingerprint != fingerprint(&specs[i])
+        {
+            names.push(format!("runs/run-{}.json", specs[i].seed));
+        }
+    }
+    Ok(names)
 }
 
 /// Run one simulation, turning errors and panics into a failed record.

@@ -129,10 +129,12 @@ fn a_killed_run_continues_from_its_checkpoint_bit_for_bit() {
     assert!(!ckpt.exists(), "removed once the record is saved");
     assert_same(&tables(&whole), &tables(&out));
 
-    // The checkpoint saved while equilibrating, in a fresh folder.
+    // The checkpoint saved while equilibrating, in a fresh folder (with the
+    // .study.json that marks a study's folder: a checkpoint alone is no proof).
     let bytes = equilibrating.expect("a checkpoint saved while equilibrating");
     let early = dir.path().join("early");
     std::fs::create_dir_all(runs_dir(&early)).unwrap();
+    std::fs::copy(out.join(".study.json"), early.join(".study.json")).unwrap();
     std::fs::write(file_of(&early, spec.seed), bytes).unwrap();
     let err = finished(&run(&file, &early, &[]).output().unwrap());
     assert!(

@@ -150,6 +150,13 @@ fn resuming_says_what_it_reuses_reruns_and_removes() {
     let err = run(&["--replicas", "2"]);
     assert!(
         err.contains(
+            "study: resuming 12 saved runs; kept 6 records that are not in this plan (runs/run-"
+        ) && err.contains(" and 3 more); --prune deletes them"),
+        "{err}"
+    );
+    let err = run(&["--replicas", "2", "--prune"]);
+    assert!(
+        err.contains(
             "study: resuming 12 saved runs; removed 6 saved runs that are not in this plan"
         ),
         "{err}"
@@ -158,7 +165,7 @@ fn resuming_says_what_it_reuses_reruns_and_removes() {
         dir.path(),
         &PISTON.replace("duration = 100.0", "duration = 50.0"),
     );
-    let err = run(&[]);
+    let err = run(&["--prune"]);
     assert!(
         err.contains(
             "study: 12 saved runs were made by another descriptor or bonkers version and run again"

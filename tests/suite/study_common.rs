@@ -190,6 +190,7 @@ pub fn run_options(out: &Path, threads: usize) -> StudyOptions {
         replicas: None,
         quick: false,
         fresh: false,
+        prune: false,
         progress: ProgressMode::Quiet,
         yes: false,
         command_line: vec!["study".into(), "run".into()],

@@ -183,13 +183,19 @@ fn a_changed_descriptor_or_fresh_reruns_everything() {
     run_study(&file, &fresh, &counting, &stop).unwrap();
     assert_eq!(calls.load(Ordering::SeqCst), 18);
 
-    // Another duration means other runs: the saved ones must not be reused.
+    // Another duration means other runs: the saved ones must not be reused,
+    // nor replaced unless --prune says so.
     write_descriptor(
         dir.path(),
         &PISTON.replace("duration = 100.0", "duration = 50.0"),
     );
     calls.store(0, Ordering::SeqCst);
-    run_study(&file, &run_options(&out, 2), &counting, &stop).unwrap();
+    let err = run_study(&file, &run_options(&out, 2), &counting, &stop).unwrap_err();
+    assert_eq!(err.exit_code(), 2, "{err}");
+    assert_eq!(calls.load(Ordering::SeqCst), 0);
+    let mut prune = run_options(&out, 2);
+    prune.prune = true;
+    run_study(&file, &prune, &counting, &stop).unwrap();
     assert_eq!(calls.load(Ordering::SeqCst), 18);
 }
 
@@ -246,7 +252,8 @@ fn nan_and_infinite_results_survive_the_run_files() {
 
 /// Saved runs are found by their seed, which depends on the point's values
 /// and the replica only: more replicas, an inserted sweep value or a new
-/// description reuse every run already done; runs no longer planned are removed.
+/// description reuse every run already done; runs no longer planned are
+/// kept (`--prune` removes them).
 #[test]
 fn replicas_sweep_values_and_descriptions_reuse_saved_runs() {
     let dir = tempfile::tempdir().unwrap();
@@ -265,11 +272,16 @@ fn replicas_sweep_values_and_descriptions_reuse_saved_runs() {
     assert_eq!((counting.take(), outcome.resumed), (6 * 2, 18));
     assert_eq!(run_files(&out), 30);
 
-    // Back to 3 replicas: nothing runs, the two extra replicas' files go,
-    // and the tables are those of the first study.
+    // Back to 3 replicas: nothing runs, the two extra replicas' files stay
+    // (until --prune), and the tables are those of the first study.
     run_study(&file, &run_options(&out, 2), &simulate, &stop).unwrap();
     assert_eq!(counting.take(), 0);
-    assert_eq!(run_files(&out), 18);
+    assert_eq!(run_files(&out), 30);
+    assert_same(&reference, &tables(&out));
+    let mut prune = run_options(&out, 2);
+    prune.prune = true;
+    run_study(&file, &prune, &simulate, &stop).unwrap();
+    assert_eq!((counting.take(), run_files(&out)), (0, 18));
     assert_same(&reference, &tables(&out));
 
     // A new mass between the others: only its points run.
@@ -356,16 +368,18 @@ fn a_second_study_on_the_same_out_dir_fails_clearly() {
     run_into(&file, &out, 2, &fake).unwrap();
 }
 
-/// What a killed run leaves (a staging folder, temporary files) is removed
-/// by the next. (Files of other names stay: `output_folder.rs`.)
+/// What a killed run leaves (a staging folder with its marker, temporary
+/// files) is removed by the next. (Files of other names stay:
+/// `output_folder.rs`, `hostile_outdir.rs`.)
 #[test]
 fn leftovers_of_a_killed_run_are_cleaned() {
     let dir = tempfile::tempdir().unwrap();
     let file = write_descriptor(dir.path(), PISTON);
     let out = dir.path().join("out");
-    std::fs::create_dir_all(out.join("runs")).unwrap();
+    run_into(&file, &out, 2, &fake).unwrap();
     std::fs::create_dir_all(out.join(".staging-4000000")).unwrap();
     let leftovers = [
+        out.join(".staging-4000000").join(".bonkers"),
         out.join(".staging-4000000").join("runs.parquet"),
         out.join(".summary.parquet.4000000-3.tmp"),
         out.join(".report.md.4000000-1.tmp"),
