@@ -19,6 +19,7 @@ mod expansion_study;
 mod heat_study;
 mod hostile_fuzz;
 mod hostile_input;
+mod hostile_names;
 mod layers;
 mod mixing_study;
 mod movie;
