@@ -543,7 +543,17 @@ fn validate(a: &PlanArgs) -> Result<i32, StudyError> {
 pub fn describe_plan(loaded: &Loaded, specs: &[RunSpec], threads: usize) -> String {
     let d = &loaded.descriptor;
     let (points, _) = sweep::count(loaded);
-    let mut out = format!("{}: ok — {}\n", loaded.file, d.study.name);
+    // One estimate per point (replicas differ only in their seeds), times its runs.
+    let costs = estimate::by_point(specs);
+    let known: Vec<(RunCost, f64)> = costs
+        .iter()
+        .filter_map(|(_, c, n)| Some(((*c)?, *n)))
+        .collect();
+    // "ok" promises a plan that can be run as estimated; without an estimate
+    // it is only valid.
+    let unknown = known.is_empty() || known.len() < costs.len();
+    let verdict = if unknown { "valid, cost unknown" } else { "ok" };
+    let mut out = format!("{}: {verdict} — {}\n", loaded.file, d.study.name);
     if let Some(sweep) = &d.sweep {
         out += &format!("  sweep ({:?}):\n", sweep.mode).to_lowercase();
         for (key, values) in &sweep.parameters {
@@ -565,14 +575,14 @@ pub fn describe_plan(loaded: &Loaded, specs: &[RunSpec], threads: usize) -> Stri
         specs.len()
     );
     out += &crate::runner::error_bars::describe(specs);
-    // One estimate per point (replicas differ only in their seeds), times its runs.
-    let costs = estimate::by_point(specs);
-    let known: Vec<(RunCost, f64)> = costs
-        .iter()
-        .filter_map(|(_, c, n)| Some(((*c)?, *n)))
-        .collect();
-    if known.is_empty() || known.len() < costs.len() {
-        out += "  estimated cost: unknown (a scene could not be resolved)\n";
+    if unknown {
+        out += &format!(
+            "  estimated cost: unknown for {} of {} points (their scenes give no collision \
+             rate to estimate from); the descriptor is valid, but how long its runs take is \
+             not known\n",
+            costs.len() - known.len(),
+            costs.len()
+        );
         return out;
     }
     let collisions: f64 = known.iter().map(|(c, n)| c.collisions * n).sum();

@@ -13,6 +13,7 @@ use crate::model::descriptor::{Descriptor, SweepMode, SweepValues};
 /// the first point, and each key's representative values within a point.
 pub fn check(loaded: &Loaded) -> Result<(), DescriptorError> {
     let d = &loaded.descriptor;
+    preset_lists(loaded)?;
     validate::study(d)
         .and_then(|()| validate::sweep(d))
         .map_err(|p| located(loaded, p))?;
@@ -56,6 +57,38 @@ pub fn check(loaded: &Loaded) -> Result<(), DescriptorError> {
     for (a, (_, _, picked)) in axes.iter().enumerate() {
         for &i in picked {
             check_point(loaded, &base, &mut checks, &at(i, Some((a, i))), Some(a))?;
+        }
+    }
+    Ok(())
+}
+
+/// A list given empty beside a preset: the typed scene cannot tell it from
+/// a list left out, which keeps the preset's, so it is refused rather than
+/// ignored.
+fn preset_lists(loaded: &Loaded) -> Result<(), DescriptorError> {
+    let Some(name) = &loaded.descriptor.scene.preset else {
+        return Ok(());
+    };
+    let scene = loaded.table.get("scene").and_then(toml::Value::as_table);
+    for (list, what) in [
+        ("species", "the scene would have no particles"),
+        ("thermal_walls", "the preset's walls cannot be removed"),
+    ] {
+        let empty = scene
+            .and_then(|s| s.get(list))
+            .and_then(toml::Value::as_array)
+            .is_some_and(Vec::is_empty);
+        if empty {
+            let key = format!("scene.{list}");
+            return Err(DescriptorError::new(
+                &loaded.file,
+                format!("`{key}` is empty: {what}"),
+            )
+            .at(crate::descriptor::locate::position_of(&loaded.text, &key))
+            .key(key)
+            .hint(format!(
+                "leave `{list}` out to keep those of preset \"{name}\", or list at least one"
+            )));
         }
     }
     Ok(())

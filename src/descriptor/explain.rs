@@ -114,10 +114,10 @@ pub fn explain(raw: &str) -> (String, Vec<String>) {
             vec!["write e.g. `[1.0, 2.0, 4.0]` or `{ from = 1.0, to = 100.0, steps = 5, scale = \"log\" }`".to_string()],
         );
     }
-    if raw.contains("untagged enum Mass") {
+    if raw.contains("untagged enum Drawn") {
         return (
-            "`mass` must be a number or a range `[lo, hi]`".to_string(),
-            vec!["write e.g. `mass = 1.0` or `mass = [1.0, 9.0]`".to_string()],
+            "must be a number or a range `[lo, hi]` of two numbers".to_string(),
+            vec!["write e.g. `mass = 1.0` or `mass = [1.0, 9.0]` (`radius` likewise)".to_string()],
         );
     }
     (humanize_types(raw), Vec::new())

@@ -61,16 +61,36 @@ pub fn load(path: &Path) -> Result<Loaded, DescriptorError> {
             meta.len()
         )));
     }
-    let mut text = String::new();
+    let mut bytes = Vec::new();
     std::fs::File::open(path)
-        .and_then(|f| f.take(MAX_DESCRIPTOR_BYTES + 1).read_to_string(&mut text))
+        .and_then(|f| f.take(MAX_DESCRIPTOR_BYTES + 1).read_to_end(&mut bytes))
         .map_err(|e| unreadable(format!("cannot read the descriptor: {e}")))?;
-    if text.len() as u64 > MAX_DESCRIPTOR_BYTES {
+    if bytes.len() as u64 > MAX_DESCRIPTOR_BYTES {
         return Err(unreadable(format!(
             "grew past {MAX_DESCRIPTOR_BYTES} bytes while being read"
         )));
     }
+    let text = utf8(&file, bytes)?;
     parse(&file, &text)
+}
+
+/// The descriptor's bytes as text; the first byte that is not UTF-8 is
+/// placed at its line:col.
+fn utf8(file: &str, bytes: Vec<u8>) -> Result<String, DescriptorError> {
+    String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let bytes = e.as_bytes();
+        let before = String::from_utf8_lossy(&bytes[..at]);
+        DescriptorError::new(
+            file,
+            format!(
+                "byte 0x{:02X} is not UTF-8 text: a descriptor is TOML, which is UTF-8",
+                bytes[at]
+            ),
+        )
+        .at(Some(crate::descriptor::locate::line_col(&before, at)))
+        .hint("save the file as UTF-8 (e.g. `iconv -f latin1 -t utf-8`)")
+    })
 }
 
 /// Largest descriptor read (explicit positions of many particles fit).
@@ -79,6 +99,7 @@ pub const MAX_DESCRIPTOR_BYTES: u64 = 16 << 20;
 /// Parse and validate descriptor `text`; `file` names it in messages.
 pub fn parse(file: &str, text: &str) -> Result<Loaded, DescriptorError> {
     let table: toml::Table = toml::from_str(text).map_err(|e| toml_error(file, text, &e))?;
+    crate::descriptor::text::printable(file, text, &table)?;
     let descriptor: Descriptor = toml::from_str(text).map_err(|e| toml_error(file, text, &e))?;
     let loaded = Loaded {
         file: file.to_string(),
@@ -133,6 +154,13 @@ fn apply_all(
             .at(place(path))
             .key(path.clone())
         };
+        if source_table == Some("quick") {
+            crate::descriptor::validate::quick_key(path).map_err(|p| {
+                let mut out = fail(p.message);
+                out.hints.extend(p.hint);
+                out
+            })?;
+        }
         apply_overrides(&mut table, path, value.clone()).map_err(&fail)?;
         descriptor = from_table(&loaded.file, &table).map_err(|e| {
             let mut out = fail(e.message);

@@ -10,6 +10,7 @@ pub mod locate;
 pub mod overrides;
 pub mod point;
 pub mod sweep;
+pub mod text;
 pub mod validate;
 pub mod validate_integrator;
 pub mod validate_observe;

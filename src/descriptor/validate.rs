@@ -225,7 +225,8 @@ pub fn sweep(d: &Descriptor) -> Check {
                         at,
                         format!(
                             "range bounds must be finite numbers, got from = {}, to = {}",
-                            r.from, r.to
+                            compact(r.from),
+                            compact(r.to)
                         ),
                         None,
                     );
@@ -235,7 +236,8 @@ pub fn sweep(d: &Descriptor) -> Check {
                         at,
                         format!(
                             "from = to = {} with {} steps repeats one value",
-                            r.from, r.steps
+                            compact(r.from),
+                            r.steps
                         ),
                         Some("use `steps = 1`, or different bounds"),
                     );
@@ -245,7 +247,8 @@ pub fn sweep(d: &Descriptor) -> Check {
                         at,
                         format!(
                             "a log range needs positive bounds, got from = {}, to = {}",
-                            r.from, r.to
+                            compact(r.from),
+                            compact(r.to)
                         ),
                         Some("use `scale = \"linear\"` or bounds > 0"),
                     );
@@ -336,6 +339,35 @@ pub fn case<'d>(d: &'d Descriptor, i: usize, named: &mut HashSet<&'d str>) -> Ch
         })?;
     }
     Ok(())
+}
+
+/// A `[quick]` key: what a sweep may set, `study.replicas`, `sweep.mode`,
+/// `sweep.parameters.<key>` and a case's `replicas` or `set.<key>`. The
+/// rest would rename the study, reseed it or edit `[quick]` itself.
+pub fn quick_key(key: &str) -> Check {
+    let case = key.strip_prefix("case.").and_then(|rest| {
+        let (index, field) = rest.split_once('.')?;
+        index.parse::<usize>().ok()?;
+        Some(field == "replicas" || field.strip_prefix("set.").is_some_and(|k| !k.is_empty()))
+    });
+    let ok = sweep_key(key).is_ok()
+        || ["study.replicas", "sweep.mode"].contains(&key)
+        || key
+            .strip_prefix("sweep.parameters.")
+            .is_some_and(|k| !k.is_empty())
+        || case == Some(true);
+    if ok {
+        return Ok(());
+    }
+    bad(
+        key,
+        format!("`{key}` is not a key `[quick]` can set"),
+        Some(&format!(
+            "[quick] sets keys below {}, `study.replicas`, `sweep.mode`, \
+             `sweep.parameters.<key>`, `case.<i>.replicas` or `case.<i>.set.<key>`",
+            SWEEPABLE.map(|s| format!("`{s}.`")).join(", ")
+        )),
+    )
 }
 
 /// A sweep key must start at a section that describes runs.

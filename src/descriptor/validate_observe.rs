@@ -3,7 +3,7 @@
 //! and run.
 
 use crate::descriptor::load::closest;
-use crate::descriptor::validate::{Check, bad};
+use crate::descriptor::validate::{Check, bad, compact};
 use crate::model::descriptor::Descriptor;
 use crate::model::movie::MovieSpec;
 use crate::model::need::Need;
@@ -161,7 +161,7 @@ pub fn analysis(d: &Descriptor, scene: &SceneSpec) -> Check {
                 Some(x) => {
                     return bad(
                         key,
-                        format!("must be {}, got {x}", spec.range_text()),
+                        format!("must be {}, got {}", spec.range_text(), compact(x)),
                         Some(spec.about),
                     );
                 }
@@ -177,6 +177,7 @@ pub fn analysis(d: &Descriptor, scene: &SceneSpec) -> Check {
         for need in info.needs() {
             met(*need, d, scene, &key, &format!("the {name} analysis"))?;
         }
+        info.check(d, scene, &key)?;
     }
     Ok(())
 }

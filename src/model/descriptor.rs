@@ -77,13 +77,40 @@ pub enum SweepMode {
     Zip,
 }
 
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum SweepValues {
     /// An explicit list of values.
     List(Vec<toml::Value>),
     /// `{ from, to, steps, scale = "linear" | "log" }`.
     Range(SweepRange),
+}
+
+/// A list, or a table read as a range: a range's own error (an unknown
+/// `scale`, a missing `steps`) is said, naming its key, rather than
+/// "matches neither".
+impl<'de> Deserialize<'de> for SweepValues {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        use serde::de::Error;
+        match toml::Value::deserialize(d)? {
+            toml::Value::Array(items) => Ok(SweepValues::List(items)),
+            toml::Value::Table(range) => {
+                if let Some(scale) = range.get("scale")
+                    && !matches!(scale.as_str(), Some("linear" | "log"))
+                {
+                    return Err(D::Error::custom(format!(
+                        "range key `scale` = {scale} is not a scale: write `scale = \"linear\"` or `scale = \"log\"`"
+                    )));
+                }
+                SweepRange::deserialize(toml::Value::Table(range))
+                    .map(SweepValues::Range)
+                    .map_err(|e| D::Error::custom(e.message()))
+            }
+            _ => Err(D::Error::custom(
+                "data did not match any variant of untagged enum SweepValues",
+            )),
+        }
+    }
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -50,15 +50,19 @@ pub fn render(inp: &Inputs) -> String {
 
 fn header(md: &mut String, inp: &Inputs) {
     let study = &inp.descriptor.study;
-    let _ = writeln!(md, "# {}\n", one_line(&study.name));
-    if !study.description.trim().is_empty() {
-        let _ = writeln!(md, "{}\n", study.description.trim());
+    let _ = writeln!(md, "# {}\n", text(&study.name));
+    // The description is the user's prose, shown as typed: its paragraphs
+    // kept, any markup in it shown as characters.
+    for paragraph in study.description.split("\n\n").map(text) {
+        if !paragraph.is_empty() {
+            let _ = writeln!(md, "{paragraph}\n");
+        }
     }
     let m = inp.meta;
     let _ = writeln!(
         md,
-        "Made by `{}` (bonkers {}) on {} threads, from {} to {}; wall time {} s.\n",
-        m.command.replace('`', "'"),
+        "Made by {} (bonkers {}) on {} threads, from {} to {}; wall time {} s.\n",
+        code(&m.command.replace('`', "'")),
         m.version,
         m.threads,
         m.started,
@@ -85,7 +89,7 @@ fn what_was_run(md: &mut String, inp: &Inputs) {
                 )
                 .to_lowercase(),
             };
-            let _ = writeln!(md, "| `{key}` | {} |", cell(&text));
+            let _ = writeln!(md, "| {} | {} |", code(key), cell(&text));
         }
         md.push('\n');
     } else {
@@ -149,7 +153,7 @@ fn what_was_run(md: &mut String, inp: &Inputs) {
         let list: Vec<String> = d
             .case
             .iter()
-            .map(|c| format!("`{}` ({} runs)", c.name, case_runs(c)))
+            .map(|c| format!("{} ({} runs)", code(&c.name), case_runs(c)))
             .collect();
         let _ = writeln!(
             md,
@@ -185,7 +189,7 @@ fn plots(md: &mut String, figures: &[Figure]) {
     }
     md.push_str("## Plots\n\n");
     for f in figures {
-        let _ = writeln!(md, "![{}]({})\n", one_line(&f.caption), f.file);
+        let _ = writeln!(md, "![{}]({})\n", caption(&f.caption), f.file);
     }
 }
 
@@ -237,10 +241,10 @@ fn theory_table(md: &mut String, inp: &Inputs) {
         };
         let _ = writeln!(
             md,
-            "| {} | {} | `{}` | {} | {} | {} | {} | {} |",
+            "| {} | {} | {} | {} | {} | {} | {} | {} |",
             r.point_id,
             cell(&params_text(inp.points, r.point_id)),
-            r.result,
+            code(&r.result),
             n,
             pm(r.mean, r.stderr),
             ci,
@@ -338,7 +342,7 @@ fn failures(md: &mut String, meta: &ReportMeta) {
         meta.failed_runs.len()
     );
     for (id, msg) in &meta.failed_runs {
-        let _ = writeln!(md, "- run {id}: {}", one_line(msg));
+        let _ = writeln!(md, "- run {id}: {}", text(msg));
     }
     md.push('\n');
 }
@@ -400,9 +404,63 @@ fn finite_or_zero(x: f64) -> f64 {
     if x.is_finite() { x } else { 0.0 }
 }
 
-/// Text safe inside a table cell: one line, pipes escaped.
+/// Text safe inside a table cell: `text`, whose pipes are escaped.
 pub fn cell(s: &str) -> String {
-    one_line(s).replace('|', "\\|")
+    text(s)
+}
+
+/// User text (a description, a name, a value, a message) as Markdown shows
+/// it, character for character: one line; each character that Markdown or
+/// inline HTML reads as markup backslash-escaped (CommonMark lets any ASCII
+/// punctuation be), a heading, quote or list marker at its start too;
+/// control characters written as escapes.
+pub fn text(s: &str) -> String {
+    escaped(s, "")
+}
+
+/// `text`, with the characters of `also` escaped too.
+fn escaped(s: &str, also: &str) -> String {
+    let s = crate::descriptor::text::visible(&one_line(s));
+    let chars: Vec<char> = s.chars().collect();
+    let word = |i: Option<usize>| {
+        i.and_then(|i| chars.get(i))
+            .is_some_and(|c| c.is_alphanumeric())
+    };
+    // A list marker "12. " or "12) " at the start.
+    let digits = chars.iter().take_while(|c| c.is_ascii_digit()).count();
+    let marker = digits > 0 && chars.get(digits + 1).is_none_or(|c| c.is_whitespace());
+    let mut out = String::with_capacity(s.len());
+    for (i, &c) in chars.iter().enumerate() {
+        let markup = match c {
+            '\\' | '`' | '*' | '[' | ']' | '<' | '>' | '&' | '|' | '~' => true,
+            // Intraword underscores (`p_max`) are no emphasis.
+            '_' => !(word(i.checked_sub(1)) && word(Some(i + 1))),
+            '#' | '-' | '+' | '=' => i == 0,
+            '.' | ')' if i == digits && marker => true,
+            c => also.contains(c),
+        };
+        if markup {
+            out.push('\\');
+        }
+        out.push(c);
+    }
+    out
+}
+
+/// A name in a code span, or as `text` where a backtick or pipe would end it.
+pub fn code(s: &str) -> String {
+    let line = one_line(s);
+    if line.is_empty() || line.contains(['`', '|']) || line.chars().any(char::is_control) {
+        text(s)
+    } else {
+        format!("`{line}`")
+    }
+}
+
+/// An image's caption: `text`, with parentheses escaped too, so that no
+/// `](` inside it ends the caption early.
+fn caption(s: &str) -> String {
+    escaped(s, "()")
 }
 
 /// Newlines folded to spaces (headings, captions and list items are one line).

@@ -164,7 +164,7 @@ pub fn section(film: &Film, file: &str) -> String {
         .species
         .iter()
         .enumerate()
-        .map(|(i, name)| format!("{name}: {}", colour_name(i)))
+        .map(|(i, name)| format!("{}: {}", super::markdown::text(name), colour_name(i)))
         .collect();
     let what = match film.dimension {
         1 => "rods on their line, each with an arrow for its velocity",

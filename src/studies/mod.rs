@@ -16,8 +16,10 @@ pub mod pressure;
 
 use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
+use crate::model::problem::Check;
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
+use crate::model::scene::SceneSpec;
 use crate::observe::Context;
 use crate::scene::Built;
 use crate::stats::ensemble::Runs;
@@ -75,6 +77,11 @@ pub trait Study: Sync {
     /// What the scene and run must give it (checked before anything runs).
     fn needs(&self) -> &'static [Need] {
         &[]
+    }
+    /// What `needs` cannot say: the scene (resolved) and `[observe]` that
+    /// its runs would fail without, refused at `key` before anything runs.
+    fn check(&self, _d: &Descriptor, _scene: &SceneSpec, _key: &str) -> Check {
+        Ok(())
     }
     /// Series observables every run records for it, beside those the
     /// descriptor asks for.

@@ -16,7 +16,7 @@ use std::sync::atomic::AtomicBool;
 use std::time::Instant;
 
 /// What `study validate` does, in-process: parse, size, plan, cost, words.
-fn validate(text: &str) -> Result<String, DescriptorError> {
+pub(crate) fn validate(text: &str) -> Result<String, DescriptorError> {
     let loaded = parse("s.toml", text)?;
     pipeline::confirm_size(&loaded, false)?;
     let specs = plan(&loaded)?;
@@ -24,42 +24,42 @@ fn validate(text: &str) -> Result<String, DescriptorError> {
     Ok(bonkers::cli::describe_plan(&loaded, &specs, 2))
 }
 
-fn edit(from: &str, to: &str) -> String {
+pub(crate) fn edit(from: &str, to: &str) -> String {
     edit_of(PISTON, from, to)
 }
 
-fn edit_of(text: &str, from: &str, to: &str) -> String {
+pub(crate) fn edit_of(text: &str, from: &str, to: &str) -> String {
     assert!(text.contains(from), "no {from:?} in the descriptor");
     text.replacen(from, to, 1)
 }
 
 /// PISTON without its sweep and `[quick]`: its own values are what runs.
-fn unswept() -> String {
+pub(crate) fn unswept() -> String {
     let head = &PISTON[..PISTON.find("[sweep]").unwrap()];
     let tail = &PISTON[PISTON.find("[run]").unwrap()..PISTON.find("[quick]").unwrap()];
     format!("{head}{tail}")
 }
 
 /// PISTON with `parameters` as its whole sweep and no `[quick]`.
-fn swept(parameters: &str) -> String {
+pub(crate) fn swept(parameters: &str) -> String {
     let head = &PISTON[..PISTON.find("[sweep.parameters]").unwrap()];
     let tail = &PISTON[PISTON.find("[run]").unwrap()..PISTON.find("[quick]").unwrap()];
     format!("{head}[sweep.parameters]\n{parameters}\n\n{tail}")
 }
 
-struct Case {
-    what: &'static str,
-    text: String,
-    expect: &'static [&'static str],
+pub(crate) struct Case {
+    pub what: &'static str,
+    pub text: String,
+    pub expect: &'static [&'static str],
 }
 
-fn case(what: &'static str, text: String, expect: &'static [&'static str]) -> Case {
+pub(crate) fn case(what: &'static str, text: String, expect: &'static [&'static str]) -> Case {
     Case { what, text, expect }
 }
 
 /// Each case is refused with a message that says all of `expect`, and no
 /// number in it runs to more digits than the largest TOML integer has.
-fn refused(cases: &[Case]) {
+pub(crate) fn refused(cases: &[Case]) {
     for c in cases {
         let err = match validate(&c.text) {
             Ok(plan) => panic!("{}: accepted:\n{plan}", c.what),

@@ -20,6 +20,7 @@ mod heat_study;
 mod hostile_fuzz;
 mod hostile_input;
 mod hostile_outdir;
+mod hostile_names;
 mod layers;
 mod mixing_study;
 mod movie;

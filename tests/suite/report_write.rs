@@ -138,7 +138,7 @@ fn summary_with_theory(runs: &[(RunSpec, RunOutput)]) -> Vec<bonkers::model::sum
 }
 
 /// Tags balance: every opened element is closed in order.
-fn balanced(svg: &str) -> Result<(), String> {
+pub(crate) fn balanced(svg: &str) -> Result<(), String> {
     let mut stack: Vec<String> = Vec::new();
     let mut rest = svg;
     while let Some(start) = rest.find('<') {
@@ -314,7 +314,7 @@ fn nan_results_and_failed_runs_do_not_panic() {
     let md = std::fs::read_to_string(dir.path().join("report.md")).expect("md");
     assert!(
         md.contains("## Failed runs")
-            && md.contains("run 99: overlap at start: particle 3 | particle 4")
+            && md.contains("run 99: overlap at start: particle 3 \\| particle 4")
     );
     assert!(md.contains("0 of 3"));
     let series = std::fs::read_to_string(dir.path().join("series_piston_x.svg")).expect("svg");

@@ -3,7 +3,7 @@
 //! the placement can reach. Lattices count their sites instead (`layout`).
 
 use super::{count, dimension};
-use crate::model::problem::{Check, bad};
+use crate::model::problem::{Check, Problem, bad, compact};
 use crate::model::scene::{Placement, SceneSpec};
 use crate::scene::compress;
 use crate::scene::placement::JAMMING;
@@ -59,6 +59,9 @@ pub fn particles_fit(s: &SceneSpec) -> Check {
         if filled <= limit * volume {
             continue;
         }
+        if let Some(p) = too_narrow(s, &region, size) {
+            return Err(p);
+        }
         let key = match s.piston.as_ref().and_then(|p| p.per_side) {
             Some(_) => "scene.piston.per_side".to_string(),
             None => format!("scene.species.{first}.count"),
@@ -66,10 +69,13 @@ pub fn particles_fit(s: &SceneSpec) -> Check {
         let (message, hint) = if d == 1 {
             (
                 format!(
-                    "rods of total length {filled} do not fit in their region of length {volume}"
+                    "rods of total length {} do not fit in their region of length {}",
+                    compact(filled),
+                    compact(volume)
                 ),
                 format!(
-                    "{n} rods need a length of {filled}: use fewer or shorter rods, or a longer box or region"
+                    "{n} rods need a length of {}: use fewer or shorter rods, or a longer box or region",
+                    compact(filled)
                 ),
             )
         } else {
@@ -85,4 +91,43 @@ pub fn particles_fit(s: &SceneSpec) -> Check {
         return bad(key, message, Some(&hint));
     }
     Ok(())
+}
+
+/// A region too full because one of its particles is wider than it along
+/// an axis: the box (or the region) is at fault there, not the count.
+fn too_narrow(s: &SceneSpec, region: &[(f64, f64)], size: &[f64]) -> Option<Problem> {
+    let d = region.len();
+    let length = |k: usize| (region[k].1 - region[k].0) * size[k];
+    let (i, sp, k) = s.species.iter().enumerate().find_map(|(i, sp)| {
+        let same = (0..d).all(|k| {
+            sp.region
+                .as_ref()
+                .map_or((0.0, 1.0), |r| (r.from[k], r.to[k]))
+                == region[k]
+        });
+        let diameter = 2.0 * sp.radius.bounds()[0];
+        let k = (0..d).find(|&k| diameter > length(k))?;
+        (same && count(s, i) > 0).then_some((i, sp, k))
+    })?;
+    let diameter = 2.0 * sp.radius.bounds()[0];
+    let whole = region[k] == (0.0, 1.0);
+    let (key, what) = if whole {
+        (format!("scene.box.{k}"), "the box")
+    } else {
+        (format!("scene.species.{i}.region"), "its region")
+    };
+    Some(Problem {
+        key,
+        message: format!(
+            "axis {k} of {what} is {} long, shorter than one particle of species `{}` \
+             (diameter {})",
+            compact(length(k)),
+            sp.name,
+            compact(diameter)
+        ),
+        hint: Some(format!(
+            "make axis {k} at least {} long, or the particles smaller",
+            compact(diameter)
+        )),
+    })
 }

@@ -3,7 +3,7 @@
 //! species, at the smallest radius each may draw.
 
 use super::{dimension, positions};
-use crate::model::problem::{Check, Problem, bad};
+use crate::model::problem::{Check, Problem, bad, compact};
 use crate::model::scene::{Boundary, Placement, SceneSpec};
 use crate::scene::refusal::{Blame, Refusal};
 use crate::scene::slots::{self, Group, Piston};
@@ -86,11 +86,13 @@ fn periodic_room<const D: usize>(groups: &[Group<D>], space: &Space<D>) -> Check
             return bad(
                 format!("scene.box.{k}"),
                 format!(
-                    "periodic axis {k} is {l} long, too short for particles of diameter {sigma}"
+                    "periodic axis {k} is {} long, too short for particles of diameter {}",
+                    compact(l),
+                    compact(sigma)
                 ),
                 Some(&format!(
                     "make it at least {} long, or use walls on that axis",
-                    3.0 * sigma * 1.02
+                    compact(3.0 * sigma * 1.02)
                 )),
             );
         }

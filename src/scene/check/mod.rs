@@ -17,7 +17,7 @@ mod positions;
 mod species;
 mod walls;
 
-use crate::model::problem::{Check, bad, positive};
+use crate::model::problem::{Check, bad, compact, positive};
 use crate::model::scene::{Placement, SceneSpec};
 
 /// Particles per run: at ~300 bytes each (3D), 15 GB.
@@ -105,7 +105,7 @@ fn vector(key: &str, v: &[f64], s: &SceneSpec) -> Check {
     match v.iter().position(|x| !x.is_finite()) {
         Some(k) => bad(
             format!("{key}.{k}"),
-            format!("must be a finite number, got {}", v[k]),
+            format!("must be a finite number, got {}", compact(v[k])),
             None,
         ),
         None => Ok(()),

@@ -34,6 +34,18 @@ pub fn piston(s: &SceneSpec) -> Check {
         .as_ref()
         .and_then(|b| b.first().copied())
         .unwrap_or(f64::NAN);
+    // A piston wider than the box fits at no position: its radius is at fault.
+    if 2.0 * p.radius > length {
+        return bad(
+            "scene.piston.radius",
+            format!(
+                "{} is more than half the box length {}: the piston fits nowhere",
+                compact(p.radius),
+                compact(length)
+            ),
+            Some("a piston is a thin wall; its radius is small beside the box, e.g. 0 or 0.5"),
+        );
+    }
     let x = p.position * length;
     let inside =
         p.position > 0.0 && p.position < 1.0 && x - p.radius >= 0.0 && x + p.radius <= length;
@@ -42,8 +54,10 @@ pub fn piston(s: &SceneSpec) -> Check {
             "scene.piston.position",
             format!(
                 "must be a fraction of the box between 0 and 1 that keeps the piston (radius {}) \
-                 inside: at {} it is outside the box [0, {length}]",
-                p.radius, p.position
+                 inside: at {} it is outside the box [0, {}]",
+                compact(p.radius),
+                compact(p.position),
+                compact(length)
             ),
             None,
         );

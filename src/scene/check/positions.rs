@@ -3,7 +3,7 @@
 //! same when the run starts). Positions on a periodic axis are folded into
 //! the box first, as the builder and the engine fold them.
 
-use crate::model::problem::{Check, bad};
+use crate::model::problem::{Check, bad, compact};
 use crate::model::scene::SpeciesSpec;
 use crate::scene::slots::Piston;
 use crate::scene::space::Space;
@@ -34,9 +34,11 @@ pub fn positions<const D: usize>(
                 return bad(
                     key(i),
                     format!(
-                        "particle {i} at {:?} (radius {r}) is outside the box on axis {k}, which \
-                         spans [0, {l}]",
-                        positions[i]
+                        "particle {i} at {:?} (radius {}) is outside the box on axis {k}, which \
+                         spans [0, {}]",
+                        positions[i],
+                        compact(r),
+                        compact(l)
                     ),
                     Some(
                         "a position is the particle's centre: keep it at least its radius from each wall",
@@ -83,8 +85,10 @@ fn on_piston(i: usize, at: &[f64], r: f64, p: Piston) -> Check {
     bad(
         key(i),
         format!(
-            "particle {i} at {at:?} (radius {r}) overlaps the piston at x = {} (half thickness {})",
-            p.x, p.half
+            "particle {i} at {at:?} (radius {}) overlaps the piston at x = {} (half thickness {})",
+            compact(r),
+            compact(p.x),
+            compact(p.half)
         ),
         Some("place it clear of the piston, or move the piston"),
     )

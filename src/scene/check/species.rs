@@ -1,7 +1,7 @@
 //! The species: names, counts, masses, radii and regions.
 
 use super::{MAX_PARTICLES, axes, count, mass, particles};
-use crate::model::problem::{Check, bad, name_fits, non_negative};
+use crate::model::problem::{Check, bad, compact, name_fits, non_negative};
 use crate::model::scene::{Drawn, SceneSpec};
 use crate::scene::build::PISTON;
 
@@ -69,6 +69,17 @@ pub fn species(s: &SceneSpec) -> Check {
         match sp.mass {
             Drawn::Fixed(m) if m == f64::INFINITY => {}
             Drawn::Fixed(m) => mass(&key("mass"), m, Some(&masses))?,
+            Drawn::Range(bounds) if bounds.contains(&f64::INFINITY) => {
+                return bad(
+                    key("mass"),
+                    format!(
+                        "range [{}, {}]: a range draws finite masses",
+                        compact(bounds[0]),
+                        compact(bounds[1])
+                    ),
+                    Some("`inf` is a mass on its own: `mass = inf` makes the species immovable"),
+                );
+            }
             Drawn::Range([lo, hi]) => {
                 mass(&key("mass"), lo, Some(&masses))?;
                 mass(&key("mass"), hi, Some(&masses))?;
@@ -82,7 +93,11 @@ pub fn species(s: &SceneSpec) -> Check {
                 if !(0.0..=1.0).contains(&lo) || !(0.0..=1.0).contains(&hi) || lo >= hi {
                     return bad(
                         key("region"),
-                        format!("axis {a}: [{lo}, {hi}] is not a part of the box"),
+                        format!(
+                            "axis {a}: [{}, {}] is not a part of the box",
+                            compact(lo),
+                            compact(hi)
+                        ),
                         Some(&format!(
                             "species `{name}`: regions are fractions of the box: 0 <= from < to <= 1"
                         )),
@@ -107,7 +122,7 @@ fn reversed(key: &str, v: Drawn) -> Check {
     match v {
         Drawn::Range([lo, hi]) if lo > hi => bad(
             key,
-            format!("range [{lo}, {hi}] is reversed"),
+            format!("range [{}, {}] is reversed", compact(lo), compact(hi)),
             Some("write `[lo, hi]` with lo <= hi"),
         ),
         _ => Ok(()),

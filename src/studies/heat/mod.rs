@@ -15,8 +15,10 @@ use super::options::value;
 use super::{Finished, Study, StudyOption};
 use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
+use crate::model::problem::{Check, bad};
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
+use crate::model::scene::SceneSpec;
 use crate::stats::ensemble::Runs;
 use crate::theory::heat::{conductivity_dilute, enskog_factor};
 pub use conduct::{Line, Profile, centre_density};
@@ -91,6 +93,25 @@ impl Study for Heat {
     }
     fn needs(&self) -> &'static [Need] {
         &[Need::Sampling, Need::Walls, Need::ThermalWalls]
+    }
+    fn check(&self, d: &Descriptor, _: &SceneSpec, key: &str) -> Check {
+        let experiment = Gas::of(d).and_then(|gas| gas.experiment());
+        let o = &d.observe;
+        match experiment {
+            Err(message) => bad(key, message, None),
+            // What `conduction` reads off the walls and the profile.
+            Ok(Experiment::Conduct { .. }) if !o.scalars.iter().any(|n| n == "wall_heat") => bad(
+                key,
+                "a hot and a cold wall: conduction needs the heat each wall gives",
+                Some("add `scalars = [\"wall_heat\"]` to [observe]"),
+            ),
+            Ok(Experiment::Conduct { .. }) if !o.histograms.iter().any(|n| n == "energy_x") => bad(
+                key,
+                "a hot and a cold wall: conduction needs the temperature profile",
+                Some("add `histograms = [\"energy_x\"]` to [observe]"),
+            ),
+            Ok(_) => Ok(()),
+        }
     }
     fn series(&self) -> &'static [&'static str] {
         SERIES

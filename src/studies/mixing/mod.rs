@@ -17,8 +17,10 @@ mod section_rods;
 use super::{Finished, Start, Study};
 use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
+use crate::model::problem::{Check, bad};
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
+use crate::model::scene::SceneSpec;
 use crate::stats::ensemble::Runs;
 pub use disks::diffusion;
 pub use measure::{first_passage, late_mean, line};
@@ -68,6 +70,33 @@ impl Study for Mixing {
         // Walls too, except for the periodic boxes that measure D (2D):
         // rods check theirs in `per_run`.
         &[Need::Sampling]
+    }
+    fn check(&self, _: &Descriptor, scene: &SceneSpec, key: &str) -> Check {
+        use crate::descriptor::validate_scene::{count, dimension};
+        let walled = scene
+            .boundary
+            .as_ref()
+            .is_none_or(|b| b.first() != Some(&crate::model::scene::Boundary::Periodic));
+        match dimension(scene) {
+            1 if !walled => bad(
+                key,
+                "the mixing analysis in 1D needs walls (its equilibrium assumes only the energy \
+                 is conserved; on a ring momentum is too)",
+                Some("set `boundary = [\"walls\"]` in [scene]"),
+            ),
+            2 if scene.species.len() < 2 || count(scene, 0) == 0 || count(scene, 1) == 0 => bad(
+                key,
+                "the mixing analysis in 2D needs two species, each with particles (the first \
+                 starts on the left, the second on the right)",
+                Some("give `[[scene.species]]` two entries with `count` >= 1"),
+            ),
+            3 => bad(
+                key,
+                "the mixing analysis is for rods (1D) and disks (2D)",
+                Some("use `dimension = 1` or `2`"),
+            ),
+            _ => Ok(()),
+        }
     }
     fn series(&self) -> &'static [&'static str] {
         SERIES

@@ -107,7 +107,8 @@ impl Point {
         if self.group.is_empty() {
             mass
         } else {
-            format!("{mass}, {}", self.group)
+            // Swept values may be any text (a species' name): shown literally.
+            format!("{mass}, {}", crate::report::markdown::text(&self.group))
         }
     }
 

@@ -18,8 +18,10 @@ mod section;
 
 use super::{Finished, Start, Study};
 use crate::model::descriptor::Descriptor;
+use crate::model::problem::{Check, bad};
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
+use crate::model::scene::SceneSpec;
 use crate::stats::ensemble::Runs;
 
 pub use equations::{Equation, of as equations};
@@ -51,6 +53,28 @@ impl Study for Pressure {
     }
     fn about(&self) -> &'static str {
         "compressibility factor Z = βP/ρ from the wall or virial pressure against packing fraction, with equilibration cuts, block-average errors and the 1/N extrapolation, beside Tonks (rods), Kolafa-Rottner, the virial series and Henderson (disks), Hansen-Goos, Carnahan-Starling-Kolafa, the virial series and Carnahan-Starling (spheres)"
+    }
+    fn check(&self, d: &Descriptor, scene: &SceneSpec, key: &str) -> Check {
+        if scene.piston.is_some() {
+            return bad(
+                key,
+                "the pressure analysis needs a scene without a piston",
+                Some("remove `[scene.piston]`: a piston moves the walls the pressure is read on"),
+            );
+        }
+        let o = &d.observe;
+        let pressure = |n: &String| n == "wall_pressure" || n == "virial_pressure";
+        if o.scalars.iter().chain(&o.series).any(pressure) {
+            return Ok(());
+        }
+        bad(
+            key,
+            "the pressure analysis needs a pressure: `wall_pressure` or `virial_pressure` observed",
+            Some(
+                "add `scalars = [\"wall_pressure\"]` (walls) or `[\"virial_pressure\"]` to \
+                 [observe], or the same under `series` for equilibration cuts and block errors",
+            ),
+        )
     }
     fn results(&self) -> &'static [&'static str] {
         RESULTS
