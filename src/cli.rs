@@ -111,18 +111,22 @@ struct RunArgs {
     checkpoint_every: f64,
 }
 
+/// The longest checkpoint interval, seconds (about 31 years: longer is
+/// never, which 0 says).
+const MAX_CHECKPOINT_SECONDS: f64 = 1e9;
+
 fn parse_seconds(text: &str) -> Result<f64, String> {
     match text.parse::<f64>() {
-        Ok(s) if s.is_finite() && s >= 0.0 => Ok(s),
+        Ok(s) if (0.0..=MAX_CHECKPOINT_SECONDS).contains(&s) => Ok(s),
         _ => Err(format!(
-            "`{text}` is not a number of seconds >= 0 (0: no checkpoints)"
+            "`{text}` is not a number of seconds from 0 to {MAX_CHECKPOINT_SECONDS:e} (0: no checkpoints)"
         )),
     }
 }
 
-/// The ids `--runs` takes.
+/// The ids `--runs` takes, as ranges (checked against the plan later).
 #[derive(Debug, Clone)]
-struct RunIds(Vec<u64>);
+struct RunIds(Vec<std::ops::RangeInclusive<u64>>);
 
 fn parse_runs(text: &str) -> Result<RunIds, String> {
     collect::parse_ranges(text).map(RunIds)
@@ -146,7 +150,7 @@ struct SlurmArgs {
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
     shards: u32,
     /// CPUs per task: the threads of each shard.
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=MAX_THREADS as i64))]
     cpus: u32,
     /// Slurm partition (default: the cluster's).
     #[arg(long)]
@@ -399,25 +403,34 @@ fn status_of(dir: &Path) -> Result<i32, StudyError> {
 
 /// `study slurm`.
 fn slurm_job(a: &SlurmArgs) -> Result<i32, StudyError> {
+    let absolute = |p: &Path| std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf());
+    // What goes into the scripts is checked first (`script_text`).
+    slurm::check_flags(a.partition.as_deref(), a.mem.as_deref(), a.time.as_deref())?;
+    crate::runner::script_text::path_text("FILE", &absolute(&a.plan.file))?;
     let loaded = pipeline::prepare(&a.plan.file, a.plan.replicas, a.plan.quick)?;
     pipeline::confirm_size(&loaded, a.plan.yes)?;
     let specs = plan::plan(&loaded)?;
     pipeline::confirm_cost(&loaded, &specs, a.plan.yes)?;
+    if a.shards as usize > specs.len() {
+        return Err(DescriptorError::new(
+            "--shards",
+            format!(
+                "{} is more shards than the plan has runs ({})",
+                a.shards,
+                specs.len()
+            ),
+        )
+        .hint(format!(
+            "a shard holds at least one run: give --shards 1 to {}",
+            specs.len()
+        ))
+        .into());
+    }
     let out = a
         .out
         .clone()
         .unwrap_or_else(|| pipeline::default_out_dir(&loaded, a.plan.quick));
-    let absolute = |p: &Path| std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf());
-    let file = a.plan.file.display().to_string();
-    if let Some(t) = &a.time
-        && slurm::time_limit_seconds(t).is_none()
-    {
-        return Err(
-            DescriptorError::new(&file, format!("--time {t} is not a Slurm time limit"))
-                .hint("write minutes, H:MM:SS or D-HH:MM:SS, e.g. --time 2:00:00")
-                .into(),
-        );
-    }
+    crate::runner::script_text::directive_path("--out", &absolute(&out))?;
     crate::runner::outdir::check(&out, a.force)?;
     // So `study status OUT` knows the plan before any task has started.
     let origin = Origin::new(

@@ -196,30 +196,38 @@ fn id_ranges(ids: &[u64]) -> String {
     parts.join(", ")
 }
 
-/// "0-4,7,9-10" (as `--runs` takes them) -> ascending ids without repeats.
-pub fn parse_ranges(text: &str) -> Result<Vec<u64>, String> {
+/// "0-4,7,9-10" (as `--runs` takes them) -> ascending, disjoint ranges of
+/// ids, not the ids: a range can be as long as u64 allows until it is
+/// checked against the plan (`pipeline::ids_in_plan`).
+pub fn parse_ranges(text: &str) -> Result<Vec<std::ops::RangeInclusive<u64>>, String> {
     let bad = |part: &str| {
         format!(
             "`{part}` is not a run id or a range of them: write e.g. `3,7-9` (the run_id column)"
         )
     };
-    let mut ids = std::collections::BTreeSet::new();
+    let mut ranges = Vec::new();
     for part in text.split(',').map(str::trim) {
         let number = |s: &str| s.trim().parse::<u64>().map_err(|_| bad(part));
-        match part.split_once('-') {
-            Some((a, b)) => {
-                let (a, b) = (number(a)?, number(b)?);
-                if a > b {
-                    return Err(bad(part));
-                }
-                ids.extend(a..=b);
+        let (a, b) = match part.split_once('-') {
+            Some((a, b)) => (number(a)?, number(b)?),
+            None => (number(part)?, number(part)?),
+        };
+        if a > b {
+            return Err(bad(part));
+        }
+        ranges.push((a, b));
+    }
+    ranges.sort_unstable();
+    let mut merged: Vec<std::ops::RangeInclusive<u64>> = Vec::with_capacity(ranges.len());
+    for (a, b) in ranges {
+        match merged.last_mut() {
+            Some(last) if a <= last.end().saturating_add(1) => {
+                *last = *last.start()..=b.max(*last.end());
             }
-            None => {
-                ids.insert(number(part)?);
-            }
+            _ => merged.push(a..=b),
         }
     }
-    Ok(ids.into_iter().collect())
+    Ok(merged)
 }
 
 /// What a collect made.
@@ -479,11 +487,11 @@ mod tests {
 
     #[test]
     fn ranges_parse_back() {
-        assert_eq!(
-            parse_ranges("0-4,7,9-10"),
-            Ok(vec![0, 1, 2, 3, 4, 7, 9, 10])
-        );
-        assert_eq!(parse_ranges("5, 3,3"), Ok(vec![3, 5]));
+        assert_eq!(parse_ranges("0-4,7,9-10"), Ok(vec![0..=4, 7..=7, 9..=10]));
+        assert_eq!(parse_ranges("5, 3,3"), Ok(vec![3..=3, 5..=5]));
+        assert_eq!(parse_ranges("4-6,0-2,3,9"), Ok(vec![0..=6, 9..=9]));
+        let all = u64::MAX;
+        assert_eq!(parse_ranges(&format!("0-{all},{all}")), Ok(vec![0..=all]));
         for bad in ["", "4-2", "x", "1-", "-3"] {
             assert!(parse_ranges(bad).is_err(), "{bad}");
         }

@@ -18,6 +18,7 @@ pub mod progress;
 pub mod publish;
 pub mod record;
 pub mod run;
+pub mod script_text;
 pub mod seeds;
 pub mod shard;
 pub mod simulate;

@@ -18,6 +18,7 @@ use crate::runner::progress::ProgressMode;
 use crate::runner::run::{self, RunnerOptions, RunnerReport, SimulateFn, Subset, run_subset};
 use crate::runner::shard::{self, Shard};
 use anyhow::Context;
+use std::ops::RangeInclusive;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant, SystemTime};
@@ -431,8 +432,35 @@ pub fn run_part(
 pub enum Slice {
     /// `--shard K/N` (see `shard.rs`).
     Shard(Shard),
-    /// `--runs 3,7-9`: these run ids.
-    Runs(Vec<u64>),
+    /// `--runs 3,7-9`: these ranges of run ids (`collect::parse_ranges`).
+    Runs(Vec<RangeInclusive<u64>>),
+}
+
+/// The ids `ranges` name, once every one is shown to be in the plan `specs`
+/// (bad input otherwise, naming the plan's range): never more ids than
+/// the plan has runs, whatever the ranges say.
+pub fn ids_in_plan(
+    file: &Path,
+    specs: &[RunSpec],
+    ranges: &[RangeInclusive<u64>],
+) -> Result<Vec<u64>, DescriptorError> {
+    let runs = specs.len() as u64;
+    if let Some(r) = ranges.iter().find(|r| *r.end() >= runs) {
+        let id = (*r.start()).max(runs);
+        let whose = match runs {
+            0 => "which has no runs".to_string(),
+            n => format!("whose runs are 0 to {}", n - 1),
+        };
+        return Err(DescriptorError::new(
+            &file.display().to_string(),
+            format!("--runs: run {id} is not in the plan, {whose}"),
+        )
+        .hint(format!(
+            "give ids below {runs} (the run_id column), e.g. --runs 0-{}",
+            runs.saturating_sub(1)
+        )));
+    }
+    Ok(ranges.iter().flat_map(|r| r.clone()).collect())
 }
 
 /// A part of the plan at `path` (`--shard`, `--runs`), run into records
@@ -446,12 +474,9 @@ pub fn run_slice(
     stop: &AtomicBool,
 ) -> Result<RunnerReport, StudyError> {
     let planned = plan_run(path, options)?;
-    let shard = match slice {
-        Slice::Shard(s) => Some(*s),
-        Slice::Runs(_) => None,
-    };
-    let _lock = claim_shared(&planned.out_dir, shard, options.force)?;
-    let report = match slice {
+    // The ids first: ids outside the plan are bad input, and nothing is
+    // written before that is known.
+    let (ids, shard) = match slice {
         Slice::Shard(s) => {
             let dealt = shard::deal(&shard::estimated_seconds(&planned.specs), s.count);
             let ids: Vec<u64> = planned
@@ -461,24 +486,13 @@ pub fn run_slice(
                 .filter(|&(_, &k)| k == s.index)
                 .map(|(spec, _)| spec.run_id)
                 .collect();
-            compute(
-                &planned,
-                Subset::Ids(&ids),
-                options,
-                Claim::Shared,
-                simulate,
-                stop,
-            )?
+            (ids, Some(*s))
         }
-        Slice::Runs(ids) => compute(
-            &planned,
-            Subset::Ids(ids),
-            options,
-            Claim::Shared,
-            simulate,
-            stop,
-        )?,
+        Slice::Runs(ranges) => (ids_in_plan(path, &planned.specs, ranges)?, None),
     };
+    let _lock = claim_shared(&planned.out_dir, shard, options.force)?;
+    let subset = Subset::Ids(&ids);
+    let report = compute(&planned, subset, options, Claim::Shared, simulate, stop)?;
     Ok(report.0)
 }
 

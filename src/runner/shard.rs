@@ -72,14 +72,19 @@ pub fn estimated_seconds(specs: &[RunSpec]) -> Vec<f64> {
 }
 
 /// The shard (1-based) of each run of the plan, by position, for `count`
-/// shards, dealt by `seconds` (see the module comment).
+/// shards, dealt by `seconds` (see the module comment). Memory follows the
+/// plan, not `count`: an untouched shard is never picked before a lower
+/// untouched one, so R runs reach only shards 1 to R, and only those are
+/// kept (the deal is the one all `count` shards would give).
 pub fn deal(seconds: &[f64], count: u32) -> Vec<u32> {
     let mut order: Vec<usize> = (0..seconds.len()).collect();
     order.sort_by(|&a, &b| seconds[b].total_cmp(&seconds[a]).then(a.cmp(&b)));
+    let reachable = u32::try_from(seconds.len()).unwrap_or(u32::MAX);
     // Loads are finite and >= 0, where the order of f64 bits is that of
     // the numbers: an exact, integer key.
-    let mut loads: BinaryHeap<Reverse<(u64, u32)>> =
-        (1..=count.max(1)).map(|k| Reverse((0, k))).collect();
+    let mut loads: BinaryHeap<Reverse<(u64, u32)>> = (1..=count.min(reachable).max(1))
+        .map(|k| Reverse((0, k)))
+        .collect();
     let mut shard = vec![0; seconds.len()];
     for i in order {
         let Some(Reverse((load, k))) = loads.pop() else {
@@ -127,5 +132,32 @@ mod tests {
             assert!(loads.iter().all(|&l| l <= mean + 7.0), "{n}: {loads:?}");
         }
         assert_eq!(deal(&seconds, 3), deal(&seconds, 3));
+    }
+
+    /// More shards than runs: the deal keeps only the shards runs can
+    /// reach, and is the one a heap of every shard gives (zero-cost runs,
+    /// which leave a shard's load at 0, included).
+    #[test]
+    fn many_shards_deal_as_all_of_them_would_in_memory_of_the_plan() {
+        let all = |seconds: &[f64], count: u32| {
+            let mut order: Vec<usize> = (0..seconds.len()).collect();
+            order.sort_by(|&a, &b| seconds[b].total_cmp(&seconds[a]).then(a.cmp(&b)));
+            let mut loads: BinaryHeap<Reverse<(u64, u32)>> =
+                (1..=count).map(|k| Reverse((0, k))).collect();
+            let mut shard = vec![0; seconds.len()];
+            for i in order {
+                let Reverse((load, k)) = loads.pop().unwrap();
+                shard[i] = k;
+                loads.push(Reverse(((f64::from_bits(load) + seconds[i]).to_bits(), k)));
+            }
+            shard
+        };
+        let seconds = [3.0, 0.0, 1.0, 0.0, 2.0, 1.0, 0.0];
+        for count in [1, 2, 6, 7, 8, 40] {
+            assert_eq!(deal(&seconds, count), all(&seconds, count), "{count}");
+        }
+        let dealt = deal(&seconds, u32::MAX);
+        assert!(dealt.iter().all(|&k| (1..=7).contains(&k)), "{dealt:?}");
+        assert!(deal(&[], u32::MAX).is_empty());
     }
 }

@@ -8,7 +8,9 @@
 //! and the checkpoints of its unfinished ones stay, so submitting the same
 //! script again (or only those tasks, `sbatch --array=3,7`) continues them.
 
+use crate::descriptor::errors::{DescriptorError, StudyError};
 use crate::runner::pipeline::shell_word;
+use crate::runner::script_text;
 use anyhow::{Context, bail};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -57,6 +59,45 @@ pub fn array_shards(out: &Path) -> Option<u32> {
         .and_then(|n| n.trim().parse().ok())
 }
 
+/// The job's text as the scripts write it, every part checked
+/// (`script_text`): paths as shell words, `#SBATCH` values as sbatch reads
+/// them literally.
+struct Text {
+    study: String,
+    file: String,
+    out: String,
+    /// The output folder at the start of `#SBATCH --output=` (`%` doubled).
+    output: String,
+    name: String,
+    /// `#SBATCH` lines every job of the study shares.
+    common: String,
+}
+
+/// Check `--partition`, `--mem` and `--time` for the scripts: bad input
+/// (exit 2) names the flag and what would be right.
+pub fn check_flags(
+    partition: Option<&str>,
+    mem: Option<&str>,
+    time: Option<&str>,
+) -> Result<(), DescriptorError> {
+    if let Some(p) = partition {
+        script_text::directive_value("--partition", p, "_-.,", "debug")?;
+    }
+    if let Some(m) = mem {
+        script_text::directive_value("--mem", m, "", "4G")?;
+    }
+    if let Some(t) = time {
+        script_text::directive_value("--time", t, ":-", "2:00:00")?;
+        if time_limit_seconds(t).is_none() {
+            return Err(
+                DescriptorError::new("--time", format!("{t:?} is not a Slurm time limit"))
+                    .hint("write minutes, H:MM:SS or D-HH:MM:SS, e.g. --time 2:00:00"),
+            );
+        }
+    }
+    Ok(())
+}
+
 impl SlurmJob {
     /// The flags that set the plan, as `study run` and `study collect` take them.
     fn plan_flags(&self) -> String {
@@ -73,42 +114,62 @@ impl SlurmJob {
         flags
     }
 
-    /// `#SBATCH` lines every job of the study shares.
-    fn common(&self, out: &mut String) {
+    /// Every user string of the job, checked, as the scripts write it.
+    fn text(&self) -> Result<Text, DescriptorError> {
+        check_flags(
+            self.partition.as_deref(),
+            self.mem.as_deref(),
+            self.time.as_deref(),
+        )?;
+        let word = |flag: &str, p: &Path| script_text::path_text(flag, p).map(shell_word);
+        let mut common = String::new();
         if let Some(p) = &self.partition {
-            *out += &format!("#SBATCH --partition={p}\n");
+            common += &format!("#SBATCH --partition={p}\n");
         }
         if let Some(m) = &self.mem {
-            *out += &format!("#SBATCH --mem={m}\n");
+            common += &format!("#SBATCH --mem={m}\n");
         }
+        Ok(Text {
+            study: word("the study executable", &self.study)?,
+            file: word("FILE", &self.file)?,
+            out: word("--out", &self.out)?,
+            output: script_text::directive_path("--out", &self.out)?,
+            name: script_text::job_name(&self.name),
+            common,
+        })
     }
 
     /// The job array script.
-    pub fn shards_text(&self) -> String {
-        let out = self.out.display();
+    pub fn shards_text(&self) -> Result<String, DescriptorError> {
+        let t = self.text()?;
+        let runs = shell_word(&format!(
+            "{}/runs/",
+            script_text::path_text("--out", &self.out)?
+        ));
         let mut s = format!(
             "#!/bin/bash\n\
              # Written by `study slurm` (bonkers {}): one shard of the study\n\
-             # {} per array task, into {out}/runs/.\n\
+             # {} per array task, into {runs}.\n\
              # A task resumes what an earlier one left: finished runs are kept,\n\
              # unfinished ones continue from their checkpoints.\n\
              #SBATCH --job-name={}\n\
              #SBATCH --array=1-{}\n\
              #SBATCH --cpus-per-task={}\n",
             crate::runner::manifest::version(),
-            self.file.display(),
-            self.name,
+            t.file,
+            t.name,
             self.shards,
             self.cpus
         );
-        if let Some(t) = &self.time {
-            s += &format!("#SBATCH --time={t}\n");
+        if let Some(time) = &self.time {
+            s += &format!("#SBATCH --time={time}\n");
         }
-        self.common(&mut s);
+        s += &t.common;
         s += &format!(
             "#SBATCH --requeue\n\
              #SBATCH --open-mode=append\n\
-             #SBATCH --output={out}/slurm/shard-%a.log\n"
+             #SBATCH --output={}/slurm/shard-%a.log\n",
+            t.output
         );
         let checkpoint = self
             .checkpoint_every
@@ -116,51 +177,55 @@ impl SlurmJob {
         s += &format!(
             "set -eu\n\
              echo \"shard ${{SLURM_ARRAY_TASK_ID}}/{n}: job ${{SLURM_JOB_ID}} on $(hostname), restart ${{SLURM_RESTART_COUNT:-0}}\"\n\
-             exec {study} run {file} --out {outq} --shard \"${{SLURM_ARRAY_TASK_ID}}/{n}\" \
+             exec {study} run {file} --out {out} --shard \"${{SLURM_ARRAY_TASK_ID}}/{n}\" \
              --threads \"${{SLURM_CPUS_PER_TASK:-1}}\"{flags}{checkpoint}\n",
             n = self.shards,
-            study = shell_word(&self.study.to_string_lossy()),
-            file = shell_word(&self.file.to_string_lossy()),
-            outq = shell_word(&self.out.to_string_lossy()),
+            study = t.study,
+            file = t.file,
+            out = t.out,
             flags = self.plan_flags(),
         );
-        s
+        Ok(s)
     }
 
     /// The collect script, to run after the array (afterany).
-    pub fn collect_text(&self) -> String {
-        let out = self.out.display();
+    pub fn collect_text(&self) -> Result<String, DescriptorError> {
+        let t = self.text()?;
         let mut s = format!(
             "#!/bin/bash\n\
              # Written by `study slurm`: joins the records of every shard into the\n\
-             # tables and report of {out}. If runs are missing it lists them and\n\
+             # tables and report of {}. If runs are missing it lists them and\n\
              # the status says which array tasks to submit again.\n\
              #SBATCH --job-name={}-collect\n\
              #SBATCH --cpus-per-task=1\n",
-            self.name
+            t.out, t.name
         );
-        self.common(&mut s);
-        s += &format!("#SBATCH --open-mode=append\n#SBATCH --output={out}/slurm/collect.log\n");
-        let study = shell_word(&self.study.to_string_lossy());
-        let outq = shell_word(&self.out.to_string_lossy());
+        s += &t.common;
+        s += &format!(
+            "#SBATCH --open-mode=append\n#SBATCH --output={}/slurm/collect.log\n",
+            t.output
+        );
+        let (study, out) = (&t.study, &t.out);
         s += &format!(
             "set -u\n\
-             {study} collect {outq} && exit 0\n\
+             {study} collect {out} && exit 0\n\
              code=$?\n\
-             {study} status {outq}\n\
+             {study} status {out}\n\
              exit $code\n"
         );
-        s
+        Ok(s)
     }
 
-    /// Write both scripts; returns their paths (array, collect).
-    pub fn write(&self) -> anyhow::Result<(PathBuf, PathBuf)> {
+    /// Write both scripts; returns their paths (array, collect). Nothing
+    /// is written if any part of the job cannot go into a script.
+    pub fn write(&self) -> Result<(PathBuf, PathBuf), StudyError> {
+        let (shards_text, collect_text) = (self.shards_text()?, self.collect_text()?);
         let dir = slurm_dir(&self.out);
         std::fs::create_dir_all(&dir)
             .with_context(|| format!("cannot create {}", dir.display()))?;
         let (shards, collect) = (shards_script(&self.out), collect_script(&self.out));
-        crate::files::write_atomic(&shards, self.shards_text().as_bytes())?;
-        crate::files::write_atomic(&collect, self.collect_text().as_bytes())?;
+        crate::files::write_atomic(&shards, shards_text.as_bytes())?;
+        crate::files::write_atomic(&collect, collect_text.as_bytes())?;
         Ok((shards, collect))
     }
 }
@@ -213,16 +278,17 @@ fn sbatch(args: &[&std::ffi::OsStr]) -> anyhow::Result<String> {
 }
 
 /// A Slurm time limit in seconds: "M", "M:S", "H:M:S", "D-H", "D-H:M",
-/// "D-H:M:S". None if it is none of these.
+/// "D-H:M:S", each part decimal digits. None if it is none of these.
 pub fn time_limit_seconds(t: &str) -> Option<f64> {
+    let number = |p: &str| {
+        let digits = !p.is_empty() && p.bytes().all(|b| b.is_ascii_digit());
+        digits.then(|| p.parse::<f64>().ok()).flatten()
+    };
     let (days, rest) = match t.split_once('-') {
-        Some((d, rest)) => (d.parse::<f64>().ok()?, rest),
+        Some((d, rest)) => (number(d)?, rest),
         None => (0.0, t),
     };
-    let parts: Vec<f64> = rest
-        .split(':')
-        .map(|p| p.parse::<f64>().ok())
-        .collect::<Option<_>>()?;
+    let parts: Vec<f64> = rest.split(':').map(number).collect::<Option<_>>()?;
     let with_days = t.contains('-');
     let seconds = match (with_days, parts.as_slice()) {
         (false, [m]) => m * 60.0,
@@ -247,6 +313,10 @@ mod tests {
         assert_eq!(time_limit_seconds("1-0"), Some(86_400.0));
         assert_eq!(time_limit_seconds("1-2:30"), Some(86_400.0 + 9000.0));
         assert_eq!(time_limit_seconds("1-00:00:10"), Some(86_410.0));
-        assert_eq!(time_limit_seconds("soon"), None);
+        for bad in [
+            "soon", "inf", "1e3", "+5", "1.5", "-1", "1-", "1:-2", "", "1::2",
+        ] {
+            assert_eq!(time_limit_seconds(bad), None, "{bad}");
+        }
     }
 }

@@ -9,7 +9,9 @@
 #     collect job (afterany) then fails and lists the missing runs, and
 #     `study status` names the task to submit again; resubmits it and the
 #     collect; the study completes, continuing the killed runs from their
-#     checkpoints, and the tables equal the local run's.
+#     checkpoints, and the tables equal the local run's;
+#  C. `study slurm --submit` into an output folder named with `%a`: the
+#     scripts double the `%`, so the logs and tables land in that folder.
 # Every daemon it started is stopped by its process id when it exits.
 # Needs root (slurmd runs the jobs), slurm-wlm, munge, python3 with pyarrow,
 # and a built `study` (STUDY=path, default $CARGO_TARGET_DIR/release/study).
@@ -150,4 +152,17 @@ grep "continued from their checkpoints" "$T/b/slurm/shard-1.log"
 "$STUDY" status "$T/b" | grep -q "done: 6, failed: 0, pending: 0"
 python3 tests/slurm/compare.py "$T/local" "$T/b"
 say "B: after resubmitting the killed task the study completed with the local run's tables"
+
+# C: an output folder whose name has `%a` in it: the scripts double the `%`
+# in `#SBATCH --output=`, so sbatch writes the logs into that folder.
+pct="$T/c%a"
+"$STUDY" slurm "$small" --shards 1 --out "$pct" --submit | tee "$T/c.txt"
+read -r array collect < <(sed -n 's/^submitted: array job \([0-9]*\) .* collect job \([0-9]*\) after it$/\1 \2/p' "$T/c.txt")
+wait_for "jobs $array and $collect" 150 "jobs_done $array,$collect"
+[ "$(job_state "$collect")" = COMPLETED ] || { echo "collect job (C): $(job_state "$collect")" >&2; exit 1; }
+[ -s "$pct/slurm/shard-1.log" ]
+[ -s "$pct/slurm/collect.log" ]
+[ ! -e "$T/c1" ]
+python3 tests/slurm/compare.py "$T/local" "$pct"
+say "C: an output folder named with % got its logs and the local run's tables"
 say "ok"

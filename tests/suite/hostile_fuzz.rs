@@ -5,6 +5,7 @@
 //! and the same descriptors every time. Asserts: no panic, exit code 0, 1
 //! or 2, time and memory bounded, nothing written outside OUT.
 
+use crate::bounded::{config, names, study};
 use crate::study_common::PISTON;
 use bonkers::descriptor::load::{Loaded, parse, quick};
 use bonkers::runner::estimate;
@@ -12,9 +13,7 @@ use bonkers::runner::pipeline;
 use bonkers::runner::plan::plan;
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
-use proptest::test_runner::{Config, RngAlgorithm, RngSeed, TestRng, TestRunner};
-use std::path::Path;
-use std::process::{Command, Stdio};
+use proptest::test_runner::{RngAlgorithm, TestRng, TestRunner};
 use std::time::{Duration, Instant};
 
 const STUDIES: [&str; 9] = [
@@ -263,15 +262,6 @@ fn planned(loaded: &Loaded) -> Option<f64> {
     (specs.len() <= 64).then_some(seconds)
 }
 
-fn config(cases: u32) -> Config {
-    Config {
-        cases,
-        rng_seed: RngSeed::Fixed(18),
-        failure_persistence: None,
-        ..Config::default()
-    }
-}
-
 proptest! {
     #![proptest_config(config(160))]
 
@@ -286,41 +276,6 @@ proptest! {
             prop_assert!(seconds < 10.0, "{seconds} s for study {study} with {mutations:?}");
         }
     }
-}
-
-/// `sh -c "ulimit -v ..."`: the study command with at most 2 GB of address
-/// space; killed (and failed) past `limit`.
-fn study(args: &[&str], cwd: &Path, limit: Duration) -> (i32, String) {
-    let mut child = Command::new("sh")
-        .arg("-c")
-        .arg("ulimit -v 2000000; exec \"$0\" \"$@\"")
-        .arg(env!("CARGO_BIN_EXE_study"))
-        .args(args)
-        .current_dir(cwd)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    // Read as it comes: a long message must not fill the pipe and stall it.
-    let mut stderr = child.stderr.take().unwrap();
-    let reader = std::thread::spawn(move || {
-        let mut err = String::new();
-        use std::io::Read;
-        let _ = stderr.read_to_string(&mut err);
-        err
-    });
-    let clock = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        if clock.elapsed() > limit {
-            let _ = child.kill();
-            panic!("study {args:?} ran past {limit:?}");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    (status.code().unwrap_or(-1), reader.join().unwrap())
 }
 
 /// Subprocesses: a few mutated descriptors through `study validate`, and
@@ -370,14 +325,6 @@ fn mutated_studies_through_the_command_stay_in_their_folder() {
             assert!(!err.contains("panicked"), "{err}");
             ran += 1;
         }
-        let names = |p: &Path| -> Vec<String> {
-            let mut n: Vec<String> = std::fs::read_dir(p)
-                .unwrap()
-                .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-                .collect();
-            n.sort();
-            n
-        };
         assert_eq!(
             names(&cwd),
             Vec::<String>::new(),
