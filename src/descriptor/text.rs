@@ -6,6 +6,7 @@
 use crate::descriptor::errors::DescriptorError;
 use crate::descriptor::load::show;
 use crate::descriptor::locate::position_of_keys;
+pub use crate::model::text::{control, visible};
 
 /// The first key or string of `table` that holds a control character (the
 /// description may break lines and use tabs), placed at its key in `text`.
@@ -34,25 +35,6 @@ pub fn printable(file: &str, text: &str, table: &toml::Table) -> Result<(), Desc
     .hint(
         "remove it: any printable character may be used (docs/descriptor.md, \"Names and text\")",
     ))
-}
-
-/// `s` with each control character written as its escape (`\u{1b}`).
-pub fn visible(s: &str) -> String {
-    s.chars()
-        .map(|c| {
-            if control(c) {
-                c.escape_unicode().to_string()
-            } else {
-                c.to_string()
-            }
-        })
-        .collect()
-}
-
-/// A character no key or string may hold: Unicode's control characters
-/// (C0, DEL and C1).
-pub fn control(c: char) -> bool {
-    c.is_control()
 }
 
 /// A key or a string and the first control character in it.

@@ -13,3 +13,4 @@ pub mod run_spec;
 pub mod scene;
 pub mod shared;
 pub mod summary;
+pub mod text;

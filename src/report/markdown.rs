@@ -13,6 +13,8 @@ use crate::stats::format::{count, num, pm};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
+pub use crate::model::text::{one_line, text};
+
 /// |z| above this is flagged: more than three standard errors from theory.
 pub const Z_FLAG: f64 = 3.0;
 
@@ -409,44 +411,6 @@ pub fn cell(s: &str) -> String {
     text(s)
 }
 
-/// User text (a description, a name, a value, a message) as Markdown shows
-/// it, character for character: one line; each character that Markdown or
-/// inline HTML reads as markup backslash-escaped (CommonMark lets any ASCII
-/// punctuation be), a heading, quote or list marker at its start too;
-/// control characters written as escapes.
-pub fn text(s: &str) -> String {
-    escaped(s, "")
-}
-
-/// `text`, with the characters of `also` escaped too.
-fn escaped(s: &str, also: &str) -> String {
-    let s = crate::descriptor::text::visible(&one_line(s));
-    let chars: Vec<char> = s.chars().collect();
-    let word = |i: Option<usize>| {
-        i.and_then(|i| chars.get(i))
-            .is_some_and(|c| c.is_alphanumeric())
-    };
-    // A list marker "12. " or "12) " at the start.
-    let digits = chars.iter().take_while(|c| c.is_ascii_digit()).count();
-    let marker = digits > 0 && chars.get(digits + 1).is_none_or(|c| c.is_whitespace());
-    let mut out = String::with_capacity(s.len());
-    for (i, &c) in chars.iter().enumerate() {
-        let markup = match c {
-            '\\' | '`' | '*' | '[' | ']' | '<' | '>' | '&' | '|' | '~' => true,
-            // Intraword underscores (`p_max`) are no emphasis.
-            '_' => !(word(i.checked_sub(1)) && word(Some(i + 1))),
-            '#' | '-' | '+' | '=' => i == 0,
-            '.' | ')' if i == digits && marker => true,
-            c => also.contains(c),
-        };
-        if markup {
-            out.push('\\');
-        }
-        out.push(c);
-    }
-    out
-}
-
 /// A name in a code span, or as `text` where a backtick or pipe would end it.
 pub fn code(s: &str) -> String {
     let line = one_line(s);
@@ -460,10 +424,5 @@ pub fn code(s: &str) -> String {
 /// An image's caption: `text`, with parentheses escaped too, so that no
 /// `](` inside it ends the caption early.
 fn caption(s: &str) -> String {
-    escaped(s, "()")
-}
-
-/// Newlines folded to spaces (headings, captions and list items are one line).
-pub fn one_line(s: &str) -> String {
-    s.split_whitespace().collect::<Vec<_>>().join(" ")
+    crate::model::text::escaped(s, "()")
 }

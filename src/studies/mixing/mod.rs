@@ -72,7 +72,7 @@ impl Study for Mixing {
         &[Need::Sampling]
     }
     fn check(&self, _: &Descriptor, scene: &SceneSpec, key: &str) -> Check {
-        use crate::descriptor::validate_scene::{count, dimension};
+        use crate::scene::check::{count, dimension};
         let walled = scene
             .boundary
             .as_ref()

@@ -108,7 +108,7 @@ impl Point {
             mass
         } else {
             // Swept values may be any text (a species' name): shown literally.
-            format!("{mass}, {}", crate::report::markdown::text(&self.group))
+            format!("{mass}, {}", crate::model::text::text(&self.group))
         }
     }
 
