@@ -110,7 +110,7 @@ pub fn build<const D: usize>(spec: &SceneSpec, rng: &mut ChaCha8Rng) -> Result<B
                 growth_rate: growth_rate.unwrap_or(compress::GROWTH_RATE),
                 from: from.unwrap_or(CompressFrom::Random),
             };
-            let (x, cost) = compress::compress(&slots, &inv_mass, &space, &names, &settings, rng)?;
+            let (x, cost) = compress::compress(&slots, &space, &names, &settings, rng)?;
             prepared = Some(cost);
             x
         }

@@ -69,17 +69,19 @@ pub struct Settings {
     pub from: CompressFrom,
 }
 
-/// Positions of all slots at their full radii.
+/// Positions of all slots at their full radii. The packing is a
+/// configuration, so it is grown with equal masses whatever the species'
+/// (the scene assigns those after): with a mass ratio of 1e6 a light gas
+/// would carry all the motion and the heavy particles jam at 0.5-0.6.
 pub fn compress<const D: usize>(
     slots: &[Slot<D>],
-    inv_mass: &[f64],
     space: &Space<D>,
     names: &[String],
     settings: &Settings,
     rng: &mut ChaCha8Rng,
 ) -> Result<(Vec<[f64; D]>, Preparation), String> {
     let started = Instant::now();
-    // The rate is positive and every particle movable: see `check`.
+    // The rate is positive: see `check`.
     let rate = settings.growth_rate;
     let target = densest_region(slots, names)?;
     let box_phi = |scale: f64| {
@@ -105,7 +107,7 @@ pub fn compress<const D: usize>(
         CompressFrom::Random => placement::random(&small, space, rng)?,
         CompressFrom::Lattice => lattice::place(&small, space, None, names, rng)?,
     };
-    let mut g = Grower::new(slots, inv_mass, space, start, s0, rate, rng)?;
+    let mut g = Grower::new(slots, space, start, s0, rate, rng)?;
     let t_end = (1.0 - s0) / rate;
     let stall = (STALL * (GROWTH_RATE / rate) * slots.len() as f64) as u64 + 1000;
     g.run(t_end, stall).map_err(|stalled| {
@@ -192,7 +194,6 @@ enum Event {
 /// event time, as in the engine.
 struct Grower<'a, const D: usize> {
     slots: &'a [Slot<D>],
-    inv_mass: &'a [f64],
     space: Space<D>,
     /// Per particle and axis: the bounds it bounces off (None where it wraps).
     walls: Vec<[Option<(f64, f64)>; D]>,
@@ -212,7 +213,6 @@ struct Grower<'a, const D: usize> {
 impl<'a, const D: usize> Grower<'a, D> {
     fn new(
         slots: &'a [Slot<D>],
-        inv_mass: &'a [f64],
         space: &Space<D>,
         pos: Vec<[f64; D]>,
         s0: f64,
@@ -225,13 +225,11 @@ impl<'a, const D: usize> Grower<'a, D> {
         for x in &pos {
             cells.push(x);
         }
-        let vel = inv_mass
-            .iter()
-            .map(|&im| std::array::from_fn(|_| im.sqrt() * gaussian(rng)))
+        let vel = (0..n)
+            .map(|_| std::array::from_fn(|_| gaussian(rng)))
             .collect();
         let mut g = Grower {
             slots,
-            inv_mass,
             space: *space,
             walls: slots
                 .iter()
@@ -328,10 +326,10 @@ impl<'a, const D: usize> Grower<'a, D> {
         if !(closing < 0.0 && dist > 0.0) {
             return false;
         }
-        let impulse = -2.0 * closing / (self.inv_mass[i] + self.inv_mass[j]);
+        // Equal masses: each takes half the reversal of the closing rate.
         for k in 0..D {
-            self.vel[i][k] -= impulse * self.inv_mass[i] * n[k];
-            self.vel[j][k] += impulse * self.inv_mass[j] * n[k];
+            self.vel[i][k] += closing * n[k];
+            self.vel[j][k] -= closing * n[k];
         }
         self.stamp[i] = self.stamp[i].wrapping_add(1);
         self.stamp[j] = self.stamp[j].wrapping_add(1);
@@ -458,8 +456,7 @@ impl<'a, const D: usize> Grower<'a, D> {
         let kinetic: f64 = self
             .vel
             .iter()
-            .zip(self.inv_mass)
-            .map(|(v, im)| 0.5 * v.iter().map(|x| x * x).sum::<f64>() / im)
+            .map(|v| 0.5 * v.iter().map(|x| x * x).sum::<f64>())
             .sum();
         let c = (0.5 * (D * self.pos.len()) as f64 / kinetic).sqrt();
         if c.is_finite() {

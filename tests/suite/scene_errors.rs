@@ -600,11 +600,6 @@ fn what_a_run_refuses_validation_refuses() {
             "must be a positive number, got -1",
         ),
         refused(
-            "box = [10.0, 10.0]\nspecies = [{ name = \"a\", count = 10, mass = inf }]\nplacement = { kind = \"compress\" }\n",
-            "scene.species.0.mass",
-            "species \"a\" is immovable (infinite mass), but compression moves every particle",
-        ),
-        refused(
             "box = [10.0, 10.0]\nspecies = [{ name = \"a\", count = 3 }]\nplacement = { kind = \"explicit\", positions = [[1.0, 1.0]] }\n",
             "scene.placement.positions",
             "has 1 entries for 3 particles",

@@ -196,20 +196,7 @@ fn placement(s: &SceneSpec) -> Check {
                     p
                 })?;
             }
-            let immovable = s.species.iter().enumerate().find(|(i, sp)| {
-                sp.mass == crate::model::scene::Drawn::Fixed(f64::INFINITY) && count(s, *i) > 0
-            });
-            match immovable {
-                Some((i, sp)) => bad(
-                    format!("scene.species.{i}.mass"),
-                    format!(
-                        "species {:?} is immovable (infinite mass), but compression moves every particle",
-                        sp.name
-                    ),
-                    Some("place immovable particles with `placement = { kind = \"explicit\" }`"),
-                ),
-                _ => Ok(()),
-            }
+            Ok(())
         }
         _ => Ok(()),
     }
