@@ -25,6 +25,8 @@ pub struct Inputs<'a> {
     pub sections: &'a [ReportSection],
     pub meta: &'a ReportMeta,
     pub figures: &'a [Figure],
+    /// What the generic figures leave out, a line each (`sampled.rs`).
+    pub omitted: &'a [String],
     pub points: &'a Points,
 }
 
@@ -43,7 +45,7 @@ pub fn render(inp: &Inputs) -> String {
         );
     }
     theory_table(&mut md, inp);
-    plots(&mut md, inp.figures);
+    plots(&mut md, inp.figures, inp.omitted);
     cost(&mut md, inp);
     failures(&mut md, inp.meta);
     footer(&mut md, inp.runs);
@@ -185,11 +187,17 @@ fn energy_drift(md: &mut String, runs: &[(RunSpec, RunOutput)]) {
     }
 }
 
-fn plots(md: &mut String, figures: &[Figure]) {
+fn plots(md: &mut String, figures: &[Figure], omitted: &[String]) {
     if figures.is_empty() {
         return;
     }
     md.push_str("## Plots\n\n");
+    for line in omitted {
+        let _ = writeln!(md, "- {line}");
+    }
+    if !omitted.is_empty() {
+        md.push('\n');
+    }
     for f in figures {
         let _ = writeln!(md, "![{}]({})\n", caption(&f.caption), f.file);
     }

@@ -12,6 +12,7 @@ mod plot_hist;
 mod plot_scalars;
 mod plot_series;
 pub mod plots;
+pub mod sampled;
 
 pub use labels::axis_label;
 
@@ -69,7 +70,8 @@ pub fn write(
         summary,
         sections,
         meta,
-        figures: &figures,
+        figures: &figures.figures,
+        omitted: &figures.omitted,
         points: &points,
     });
     write_atomic(&out_dir.join("report.md"), md.as_bytes())?;

@@ -7,34 +7,54 @@ use super::plots::{Points, evenly, point_label};
 use crate::model::chart::colour;
 use crate::model::run_output::{Histogram, RunOutput};
 use crate::model::run_spec::RunSpec;
-use std::collections::BTreeSet;
+use std::collections::{HashMap, HashSet};
 
 const MAX_POINTS: usize = 6;
 
-/// (observable, chart) for every observable a run of `points` histogrammed, sorted by name.
-pub fn charts(runs: &[(RunSpec, RunOutput)], points: &Points) -> Vec<(String, ChartSpec)> {
-    let names: BTreeSet<&str> = runs
-        .iter()
-        .filter(|(s, _)| points.contains_key(&s.point_id))
-        .flat_map(|(_, o)| o.histograms.iter().map(|h| h.observable.as_str()))
-        .collect();
+/// (observable, chart) for each of `names`, in that order; the histograms
+/// are gathered in one pass over the runs of the points shown.
+pub fn charts(
+    runs: &[(RunSpec, RunOutput)],
+    names: &[&str],
+    points: &Points,
+) -> Vec<(String, ChartSpec)> {
     let ids: Vec<u64> = points.keys().copied().collect();
     let shown = evenly(&ids, MAX_POINTS);
+    let column: HashMap<&str, usize> = names.iter().enumerate().map(|(i, n)| (*n, i)).collect();
+    let mut found: HashMap<(usize, u64), Vec<&Histogram>> = HashMap::new();
+    for (spec, out) in runs.iter().filter(|(s, _)| shown.contains(&s.point_id)) {
+        let mut seen = HashSet::new();
+        for h in &out.histograms {
+            // The first histogram of a name in a run counts.
+            if let Some(&i) = column.get(h.observable.as_str())
+                && seen.insert(i)
+            {
+                found.entry((i, spec.point_id)).or_default().push(h);
+            }
+        }
+    }
     names
-        .into_iter()
-        .map(|name| (name.to_string(), chart(name, runs, &shown, points)))
+        .iter()
+        .enumerate()
+        .map(|(i, name)| {
+            let chart = chart(name, &shown, points, &|id| {
+                found.get(&(i, id)).map_or(&[][..], Vec::as_slice)
+            });
+            (name.to_string(), chart)
+        })
         .collect()
 }
 
-fn chart(name: &str, runs: &[(RunSpec, RunOutput)], shown: &[u64], points: &Points) -> ChartSpec {
+fn chart<'a>(
+    name: &str,
+    shown: &[u64],
+    points: &Points,
+    histograms: &dyn Fn(u64) -> &'a [&'a Histogram],
+) -> ChartSpec {
     let mut layers = Vec::new();
     for (i, id) in shown.iter().enumerate() {
-        let hists: Vec<&Histogram> = runs
-            .iter()
-            .filter(|(s, _)| s.point_id == *id)
-            .filter_map(|(_, o)| o.histograms.iter().find(|h| h.observable == name))
-            .collect();
-        let Some((mean, n)) = mean_counts(&hists) else {
+        let hists = histograms(*id);
+        let Some((mean, n)) = mean_counts(hists) else {
             continue;
         };
         let bins = hists[0];

@@ -7,25 +7,33 @@ use super::labels::{axis_label, short_name};
 use super::plots::{Points, point_label, wants_log};
 use crate::model::chart::colour;
 use crate::model::summary::SummaryRow;
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::{BTreeMap, HashMap};
 
 const THEORY: Paint = Paint {
     rgb: (30, 30, 30),
     alpha: 1.0,
 };
 
-/// (result name, chart) for every result in the summary, sorted by name.
-pub fn charts(summary: &[SummaryRow], points: &Points) -> Vec<(String, ChartSpec)> {
-    let results: BTreeSet<&str> = summary.iter().map(|r| r.result.as_str()).collect();
+/// (result name, chart) for each of `names`, in that order; the rows are
+/// grouped by result in one pass.
+pub fn charts(
+    summary: &[&SummaryRow],
+    names: &[&str],
+    points: &Points,
+) -> Vec<(String, ChartSpec)> {
+    let mut by_result: HashMap<&str, Vec<&SummaryRow>> = HashMap::new();
+    for r in summary {
+        by_result.entry(r.result.as_str()).or_default().push(r);
+    }
     let x_key = x_parameter(summary);
-    results
-        .into_iter()
-        .map(|name| {
-            let rows: Vec<&SummaryRow> = summary.iter().filter(|r| r.result == name).collect();
-            (
+    names
+        .iter()
+        .filter_map(|&name| {
+            let rows = by_result.get(name)?;
+            Some((
                 name.to_string(),
-                chart(name, &rows, x_key.as_deref(), points),
-            )
+                chart(name, rows, x_key.as_deref(), points),
+            ))
         })
         .collect()
 }
@@ -33,7 +41,7 @@ pub fn charts(summary: &[SummaryRow], points: &Points) -> Vec<(String, ChartSpec
 /// The numeric swept parameter with the most distinct values (the sweep's
 /// main axis; ties go to the first); None when nothing numeric is swept
 /// (then x is the point id).
-fn x_parameter(summary: &[SummaryRow]) -> Option<String> {
+fn x_parameter(summary: &[&SummaryRow]) -> Option<String> {
     let first = summary.first()?;
     let distinct = |k: &str| {
         let mut v: Vec<u64> = summary.iter().map(|r| param(r, k).to_bits()).collect();

@@ -5,41 +5,60 @@ use super::chart::{ChartSpec, Layer};
 use super::labels::axis_label;
 use super::plots::{Points, evenly, point_label};
 use crate::model::chart::colour;
+use crate::model::run_output::Series;
 use crate::stats::ensemble::Runs;
 use crate::stats::summary::Stats;
-use std::collections::BTreeSet;
+use std::collections::{HashMap, HashSet};
 
 const MAX_POINTS: usize = 6;
 const TRACES_PER_POINT: usize = 2;
 
-/// (observable, chart) for every observable a run of `points` recorded, sorted by name.
-pub fn charts(runs: &Runs, points: &Points) -> Vec<(String, ChartSpec)> {
-    let names: BTreeSet<&str> = runs
-        .iter()
-        .filter(|(s, _)| points.contains_key(&s.point_id))
-        .flat_map(|(_, o)| o.series.iter().map(|s| s.observable.as_str()))
-        .collect();
+/// (observable, chart) for each of `names`, in that order. The single runs
+/// drawn are gathered in one pass over the runs of the points shown.
+pub fn charts(runs: &Runs, names: &[&str], points: &Points) -> Vec<(String, ChartSpec)> {
     let ids: Vec<u64> = points.keys().copied().collect();
     let shown = evenly(&ids, MAX_POINTS);
+    let column: HashMap<&str, usize> = names.iter().enumerate().map(|(i, n)| (*n, i)).collect();
+    let mut traces: HashMap<(usize, u64), Vec<&Series>> = HashMap::new();
+    for (spec, out) in runs.iter().filter(|(s, _)| shown.contains(&s.point_id)) {
+        let mut seen = HashSet::new();
+        for series in &out.series {
+            let Some(&i) = column.get(series.observable.as_str()) else {
+                continue;
+            };
+            // The first series of a name in a run, as `RunOutput::series` reads it.
+            let kept = traces.entry((i, spec.point_id)).or_default();
+            if seen.insert(i) && kept.len() < TRACES_PER_POINT {
+                kept.push(series);
+            }
+        }
+    }
     names
-        .into_iter()
-        .map(|name| (name.to_string(), chart(name, runs, &shown, points)))
+        .iter()
+        .enumerate()
+        .map(|(i, name)| {
+            let chart = chart(name, runs, &shown, points, &|id| {
+                traces.get(&(i, id)).map_or(&[][..], Vec::as_slice)
+            });
+            (name.to_string(), chart)
+        })
         .collect()
 }
 
-fn chart(name: &str, runs: &Runs, shown: &[u64], points: &Points) -> ChartSpec {
+fn chart<'a>(
+    name: &str,
+    runs: &Runs,
+    shown: &[u64],
+    points: &Points,
+    traces: &dyn Fn(u64) -> &'a [&'a Series],
+) -> ChartSpec {
     let mut layers = Vec::new();
     for (i, id) in shown.iter().enumerate() {
         let Some((t, stats)) = runs.mean(*id, name).filter(|(t, _)| !t.is_empty()) else {
             continue;
         };
         let paint = colour(i);
-        let traces = runs
-            .iter()
-            .filter(|(s, _)| s.point_id == *id)
-            .filter_map(|(_, o)| o.series(name))
-            .take(TRACES_PER_POINT);
-        for trace in traces {
+        for trace in traces(*id) {
             layers.push(Layer::Line {
                 points: trace
                     .t

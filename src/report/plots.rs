@@ -4,13 +4,13 @@
 
 use super::chart::{self, ChartSpec};
 use super::labels::{short_name, slug};
-use super::{plot_hist, plot_scalars, plot_series};
+use super::{plot_hist, plot_scalars, plot_series, sampled};
 use crate::files::write_atomic;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::model::summary::SummaryRow;
 use crate::stats::ensemble::Runs;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet, HashSet};
 use std::path::Path;
 
 /// A plot written into the out dir.
@@ -37,42 +37,72 @@ pub fn points(runs: &[(RunSpec, RunOutput)]) -> Points {
     points
 }
 
+/// The generic figures written, in report order, and what the report says
+/// about those it left out (`sampled.rs`).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Figures {
+    pub figures: Vec<Figure>,
+    pub omitted: Vec<String>,
+}
+
 /// Render and write the generic plots of the sweep; returns them in report
 /// order. A result a study presents in its own section gets no generic
 /// plot, nor does `energy_drift` (the report gives its largest value in a
-/// line); cases are their studies' to show.
+/// line); cases are their studies' to show. Many names are sampled
+/// (`sampled.rs`); each chart gathers its data in one pass over the runs.
 pub fn write_all(
     out_dir: &Path,
     presented: &[String],
     runs: &Runs,
     summary: &[SummaryRow],
-) -> anyhow::Result<Vec<Figure>> {
+) -> anyhow::Result<Figures> {
     let mut points = points(runs);
-    let cases: Vec<u64> = runs
+    let cases: HashSet<u64> = runs
         .iter()
         .filter(|(s, _)| s.case.is_some())
         .map(|(s, _)| s.point_id)
         .collect();
     points.retain(|id, _| !cases.contains(id));
+    let presented: HashSet<&str> = presented.iter().map(String::as_str).collect();
     let mut charts: Vec<(String, ChartSpec, String)> = Vec::new();
     let mut files = FileNames::default();
-    let generic: Vec<SummaryRow> = summary
+    let mut omitted = Vec::new();
+    let generic: Vec<&SummaryRow> = summary
         .iter()
-        .filter(|r| r.result != "energy_drift" && !presented.contains(&r.result))
+        .filter(|r| r.result != "energy_drift" && !presented.contains(r.result.as_str()))
         .filter(|r| points.contains_key(&r.point_id))
-        .cloned()
         .collect();
-    for (name, spec) in plot_scalars::charts(&generic, &points) {
+    let names: BTreeSet<&str> = generic.iter().map(|r| r.result.as_str()).collect();
+    let names: Vec<&str> = names.into_iter().collect();
+    let (shown, notes) = sampled::chosen(&names, "Scalar results", "summary.parquet");
+    omitted.extend(notes);
+    for (name, spec) in plot_scalars::charts(&generic, &shown, &points) {
         let caption =
             format!("{name}: mean ± standard error per sweep point, with theory where known");
         charts.push((files.unique("scalar", &name), spec, caption));
     }
-    for (name, spec) in plot_series::charts(runs, &points) {
+    let in_sweep = || {
+        runs.iter()
+            .filter(|(s, _)| points.contains_key(&s.point_id))
+    };
+    let names: BTreeSet<&str> = in_sweep()
+        .flat_map(|(_, o)| o.series.iter().map(|s| s.observable.as_str()))
+        .collect();
+    let names: Vec<&str> = names.into_iter().collect();
+    let (shown, notes) = sampled::chosen(&names, "Series", "series.parquet");
+    omitted.extend(notes);
+    for (name, spec) in plot_series::charts(runs, &shown, &points) {
         let caption =
             format!("{name} against time: mean over replicas with ±1 std band, and single runs");
         charts.push((files.unique("series", &name), spec, caption));
     }
-    for (name, spec) in plot_hist::charts(runs, &points) {
+    let names: BTreeSet<&str> = in_sweep()
+        .flat_map(|(_, o)| o.histograms.iter().map(|h| h.observable.as_str()))
+        .collect();
+    let names: Vec<&str> = names.into_iter().collect();
+    let (shown, notes) = sampled::chosen(&names, "Histograms", "histograms.parquet");
+    omitted.extend(notes);
+    for (name, spec) in plot_hist::charts(runs, &shown, &points) {
         let caption = format!("{name}: mean count per bin over replicas");
         charts.push((files.unique("hist", &name), spec, caption));
     }
@@ -81,7 +111,7 @@ pub fn write_all(
         write_atomic(&out_dir.join(&file), chart::render(&spec).as_bytes())?;
         figures.push(Figure { file, caption });
     }
-    Ok(figures)
+    Ok(Figures { figures, omitted })
 }
 
 /// SVG file names from result names. Slugs can collide ("a.b" and "a_b",

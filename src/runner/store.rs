@@ -12,7 +12,7 @@ use polars::prelude::{
     SchemaExt, SerReader,
 };
 use polars_parquet::write::schema_to_metadata_key;
-use std::collections::{BTreeMap, HashSet};
+use std::collections::{BTreeMap, HashMap, HashSet};
 use std::fs::File;
 use std::path::{Path, PathBuf};
 
@@ -335,21 +335,28 @@ fn runs_table(runs: &[(RunSpec, RunRecord)]) -> anyhow::Result<DataFrame> {
     ];
     columns.extend(param_columns(&specs, &params));
     columns.extend(case_column(&specs));
-    // Scalar names in order of first appearance (deterministic: runs are in plan order).
+    // Scalar names in order of first appearance (deterministic: runs are in
+    // plan order), each with its column, filled in one pass over each run's
+    // scalars: linear in the values, whatever the number of names.
+    let mut index: HashMap<&str, usize> = HashMap::new();
     let mut names: Vec<&str> = Vec::new();
-    for (_, r) in runs {
-        for (name, _) in &r.output.scalars {
-            if !names.contains(&name.as_str()) {
+    let mut values: Vec<Vec<Option<f64>>> = Vec::new();
+    for (row, (_, r)) in runs.iter().enumerate() {
+        for (name, value) in &r.output.scalars {
+            let column = *index.entry(name.as_str()).or_insert_with(|| {
                 names.push(name);
-            }
+                values.push(vec![None; runs.len()]);
+                names.len() - 1
+            });
+            // A name twice in one run: the first counts, as `RunOutput::scalar` reads it.
+            values[column][row].get_or_insert(*value);
         }
     }
     let mut taken: HashSet<String> = FIXED.iter().map(|s| s.to_string()).collect();
     if let Some(first) = specs.first() {
         taken.extend(first.params.iter().map(|(k, _)| k.clone()));
     }
-    for name in names {
-        let col: Vec<Option<f64>> = runs.iter().map(|(_, r)| r.output.scalar(name)).collect();
+    for (name, col) in names.into_iter().zip(values) {
         let column_name = free_name(name, &mut taken);
         columns.push(Column::new(column_name.as_str().into(), col));
     }

@@ -9,7 +9,7 @@ use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::model::summary::SummaryRow;
 use statrs::distribution::{ContinuousCDF, StudentsT};
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::{BTreeMap, HashSet};
 
 /// Two-sided confidence level of `ci_low..ci_high`.
 pub const CONFIDENCE: f64 = 0.95;
@@ -30,16 +30,7 @@ pub fn summarize(
         let params = numeric_params(&spec.params);
         let seconds: f64 = point_runs.iter().map(|(_, o)| o.wall_seconds).sum();
         let collisions: u64 = point_runs.iter().map(|(_, o)| o.collisions).sum();
-        let names: BTreeSet<&str> = point_runs
-            .iter()
-            .flat_map(|(_, o)| o.scalars.iter().map(|(n, _)| n.as_str()))
-            .collect();
-        for name in names {
-            let values: Vec<f64> = point_runs
-                .iter()
-                .filter_map(|(_, o)| o.scalar(name))
-                .filter(|v| v.is_finite())
-                .collect();
+        for (name, values) in values_by_name(&point_runs) {
             let stats = Stats::of(&values);
             let theory = theory(&spec.descriptor, name).filter(|t| t.is_finite());
             rows.push(SummaryRow {
@@ -60,6 +51,25 @@ pub fn summarize(
         }
     }
     rows
+}
+
+/// Each scalar name of `runs` (sorted) with its finite values, in run
+/// order: one pass over every run's scalars, so a run of many names costs
+/// its size, not its size squared. A name a run reports twice counts once,
+/// its first value (as `RunOutput::scalar` reads it).
+fn values_by_name<'a>(runs: &[&'a (RunSpec, RunOutput)]) -> BTreeMap<&'a str, Vec<f64>> {
+    let mut values: BTreeMap<&str, Vec<f64>> = BTreeMap::new();
+    let mut seen: HashSet<&str> = HashSet::new();
+    for (_, o) in runs {
+        seen.clear();
+        for (name, v) in &o.scalars {
+            let list = values.entry(name.as_str()).or_default();
+            if seen.insert(name.as_str()) && v.is_finite() {
+                list.push(*v);
+            }
+        }
+    }
+    values
 }
 
 /// Swept parameters as numbers: integers and floats as themselves, booleans as
