@@ -204,6 +204,7 @@ pub fn sweep(d: &Descriptor) -> Check {
                 return bad(at, "has no values", Some("give at least one value"));
             }
             SweepValues::List(v) => {
+                too_many(&at, v.len())?;
                 if sweep.mode == SweepMode::Product {
                     repeats(&at, v)?;
                 }
@@ -249,13 +250,7 @@ pub fn sweep(d: &Descriptor) -> Check {
                 r.steps
             }
         };
-        if n > MAX_POINTS {
-            return bad(
-                at,
-                format!("{n} values are more sweep points than a study can plan (at most {MAX_POINTS})"),
-                Some("sweep fewer values (a range with fewer `steps`), or split the study into several descriptors"),
-            );
-        }
+        too_many(&at, n)?;
         lengths.push((key.clone(), n));
     }
     if sweep.mode == SweepMode::Zip
@@ -294,6 +289,18 @@ pub fn sweep(d: &Descriptor) -> Check {
 /// and held while the study runs (about 2 kB and 10 µs each, so the largest
 /// plan validates in about a second).
 pub const MAX_POINTS: usize = 100_000;
+
+/// One parameter's `n` values are more points than a plan may have.
+fn too_many(at: &str, n: usize) -> Check {
+    if n <= MAX_POINTS {
+        return Ok(());
+    }
+    bad(
+        at,
+        format!("{n} values are more sweep points than a study can plan (at most {MAX_POINTS})"),
+        Some("sweep fewer values (a range with fewer `steps`), or split the study into several descriptors"),
+    )
+}
 
 /// A value listed twice, numbers compared as numbers (`10` and `10.0`).
 fn repeats(at: &str, values: &[toml::Value]) -> Check {

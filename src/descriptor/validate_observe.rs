@@ -33,6 +33,7 @@ pub fn observe(d: &Descriptor, scene: &SceneSpec) -> Check {
         }
     }
     series_fit(d, scene)?;
+    histograms_fit(d, scene)?;
     if let Some(movie) = &o.movie {
         movie_fits(movie, scene)?;
     }
@@ -121,6 +122,44 @@ fn series_fit(d: &Descriptor, scene: &SceneSpec) -> Check {
                      particles, or list fewer series",
                     round_up(t * columns_each / MAX_SERIES_VALUES)
                 )),
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Bins a run's per-particle histograms may have in all (each kept in up to
+/// 17 blocks while the run goes, and written with its edges).
+pub const MAX_HISTOGRAM_BINS: f64 = 5e6;
+
+/// Bins of a per-particle histogram at most (`velocity_x_each`: 60).
+const PARTICLE_BINS: f64 = 60.0;
+
+/// Per-particle histograms (`<index>` in what they write) have at most
+/// `MAX_HISTOGRAM_BINS` bins per run in all: refused at the one that passes it.
+fn histograms_fit(d: &Descriptor, scene: &SceneSpec) -> Check {
+    let particles = crate::descriptor::validate_scene::particles(scene) as f64;
+    let mut bins = 0.0;
+    for (i, name) in d.observe.histograms.iter().enumerate() {
+        let Some(entry) = catalogue::find(Kind::Histograms, name) else {
+            continue;
+        };
+        if !entry.writes.contains("<index>") {
+            continue;
+        }
+        bins += columns(entry.writes, particles, 1.0) * PARTICLE_BINS;
+        if bins > MAX_HISTOGRAM_BINS {
+            return bad(
+                format!("observe.histograms.{i}"),
+                format!(
+                    "the per-particle histograms would have {bins:.1e} bins per run (up to \
+                     {PARTICLE_BINS} for each of {particles} particles, per histogram); a run \
+                     keeps at most {MAX_HISTOGRAM_BINS:.0e}"
+                ),
+                Some(
+                    "use fewer particles, or list fewer per-particle histograms (`scaled_velocity_x` \
+                     and `scaled_speed` pool every particle into one)",
+                ),
             );
         }
     }
