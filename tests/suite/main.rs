@@ -18,6 +18,7 @@ mod engine_thermal_walls;
 mod equilibrium_study;
 mod expansion_study;
 mod heat_study;
+mod hostile_caps;
 mod hostile_cluster;
 mod hostile_fuzz;
 mod hostile_input;
