@@ -570,8 +570,7 @@ pub fn describe_plan(loaded: &Loaded, specs: &[RunSpec], threads: usize) -> Stri
     if let Some(sweep) = &d.sweep {
         out += &format!("  sweep ({:?}):\n", sweep.mode).to_lowercase();
         for (key, values) in &sweep.parameters {
-            let v: Vec<String> = sweep::expand_values(values).iter().map(show).collect();
-            out += &format!("    {key} = [{}]\n", v.join(", "));
+            out += &format!("    {key} = [{}]\n", sweep::values_text(values, show));
         }
     }
     let cases = d.case.len() as u64;

@@ -14,25 +14,41 @@ pub const HARD_LIMIT: u64 = 2_000_000;
 
 /// The values a sweep parameter takes, in order.
 pub fn expand_values(values: &SweepValues) -> Vec<toml::Value> {
+    (0..len(values)).map(|i| value_at(values, i)).collect()
+}
+
+/// How many values a sweep parameter takes.
+pub fn len(values: &SweepValues) -> usize {
     match values {
-        SweepValues::List(v) => v.clone(),
-        SweepValues::Range(r) => (0..r.steps)
-            .map(|i| {
-                let f = if r.steps == 1 {
-                    0.0
-                } else {
-                    i as f64 / (r.steps - 1) as f64
-                };
-                let x = match (i, r.scale) {
-                    (0, _) => r.from,
-                    (i, _) if i + 1 == r.steps => r.to,
-                    (_, Scale::Linear) => r.from + (r.to - r.from) * f,
-                    (_, Scale::Log) => significant(r.from * (r.to / r.from).powf(f)),
-                };
-                number(x)
-            })
-            .collect(),
+        SweepValues::List(v) => v.len(),
+        SweepValues::Range(r) => r.steps,
     }
+}
+
+/// Value `i` (< `len`) of a sweep parameter, without expanding the others.
+pub fn value_at(values: &SweepValues, i: usize) -> toml::Value {
+    let r = match values {
+        SweepValues::List(v) => return v[i].clone(),
+        SweepValues::Range(r) => r,
+    };
+    let f = if r.steps == 1 {
+        0.0
+    } else {
+        i as f64 / (r.steps - 1) as f64
+    };
+    let x = match (i, r.scale) {
+        (0, _) => r.from,
+        (i, _) if i + 1 == r.steps => r.to,
+        (_, Scale::Linear) => r.from + (r.to - r.from) * f,
+        (_, Scale::Log) => significant(r.from * (r.to / r.from).powf(f)),
+    };
+    number(x)
+}
+
+/// A parameter's values as `study validate` prints them: all of a short
+/// list, the ends of a long one (`model::text::shortened`).
+pub fn values_text(values: &SweepValues, show: impl Fn(&toml::Value) -> String) -> String {
+    crate::model::text::shortened(len(values), |i| show(&value_at(values, i)))
 }
 
 /// Round to 12 significant digits, so a log range gives 100, not 99.99999999999999.
@@ -86,6 +102,28 @@ pub fn points(sweep: Option<&SweepSection>) -> Vec<Vec<(String, toml::Value)>> {
                 })
                 .collect()
         }),
+    }
+}
+
+/// The sweep's points as a float: the product (or, zipped, the shortest)
+/// of its parameters' lengths, without building them and without overflow.
+pub fn size(sweep: &SweepSection) -> f64 {
+    let lens = sweep.parameters.values().map(|v| match v {
+        SweepValues::List(l) => l.len() as f64,
+        SweepValues::Range(r) => r.steps as f64,
+    });
+    match sweep.mode {
+        SweepMode::Zip => lens.fold(f64::INFINITY, f64::min).min(f64::MAX),
+        SweepMode::Product => lens.product(),
+    }
+}
+
+/// A count as a reader takes it: exact up to 10^7, then "about 1.2e21".
+pub fn points_text(x: f64) -> String {
+    if x < 1e7 {
+        format!("{x:.0}")
+    } else {
+        format!("about {x:.1e}")
     }
 }
 

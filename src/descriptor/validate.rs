@@ -204,6 +204,7 @@ pub fn sweep(d: &Descriptor) -> Check {
                 return bad(at, "has no values", Some("give at least one value"));
             }
             SweepValues::List(v) => {
+                too_many(&at, v.len())?;
                 if sweep.mode == SweepMode::Product {
                     repeats(&at, v)?;
                 }
@@ -212,13 +213,6 @@ pub fn sweep(d: &Descriptor) -> Check {
             SweepValues::Range(r) => {
                 if r.steps == 0 {
                     return bad(at, "range needs `steps >= 1`", None);
-                }
-                if r.steps as u64 > crate::descriptor::sweep::HARD_LIMIT {
-                    return bad(
-                        at,
-                        format!("{} steps is more than a study can run", r.steps),
-                        Some("use fewer steps"),
-                    );
                 }
                 if !r.from.is_finite() || !r.to.is_finite() {
                     return bad(
@@ -256,6 +250,7 @@ pub fn sweep(d: &Descriptor) -> Check {
                 r.steps
             }
         };
+        too_many(&at, n)?;
         lengths.push((key.clone(), n));
     }
     if sweep.mode == SweepMode::Zip
@@ -270,7 +265,43 @@ pub fn sweep(d: &Descriptor) -> Check {
             Some("give every parameter the same number of values, or use `mode = \"product\"`"),
         );
     }
+    let points = crate::descriptor::sweep::size(sweep);
+    if points > MAX_POINTS as f64 {
+        let sizes: Vec<String> = lengths.iter().map(|(_, n)| n.to_string()).collect();
+        return bad(
+            "sweep.parameters",
+            format!(
+                "the sweep has {} points ({} values, every combination), more than the \
+                 {MAX_POINTS} a study can plan",
+                crate::descriptor::sweep::points_text(points),
+                sizes.join(" x ")
+            ),
+            Some(
+                "sweep fewer values, `mode = \"zip\"` to pair them up, or split the study into \
+                 several descriptors",
+            ),
+        );
+    }
     Ok(())
+}
+
+/// Sweep points a plan may have: each is a descriptor checked, estimated
+/// and held while the study runs (about 2 kB and 10 µs each, so the largest
+/// plan validates in about a second).
+pub const MAX_POINTS: usize = 100_000;
+
+/// One parameter's `n` values are more points than a plan may have.
+fn too_many(at: &str, n: usize) -> Check {
+    if n <= MAX_POINTS {
+        return Ok(());
+    }
+    bad(
+        at,
+        format!("{n} values are more sweep points than a study can plan (at most {MAX_POINTS})"),
+        Some(
+            "sweep fewer values (a range with fewer `steps`), or split the study into several descriptors",
+        ),
+    )
 }
 
 /// A value listed twice, numbers compared as numbers (`10` and `10.0`).

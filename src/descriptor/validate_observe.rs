@@ -30,11 +30,10 @@ pub fn observe(d: &Descriptor, scene: &SceneSpec) -> Check {
             for need in entry.needs {
                 met(*need, d, scene, &key, &format!("`{name}`"))?;
             }
-            if (kind, name.as_str()) == (Kind::Series, "positions") {
-                positions_fit(d, scene, &key)?;
-            }
         }
     }
+    series_fit(d, scene)?;
+    histograms_fit(d, scene)?;
     if let Some(movie) = &o.movie {
         movie_fits(movie, scene)?;
     }
@@ -79,26 +78,115 @@ fn movie_fits(movie: &MovieSpec, scene: &SceneSpec) -> Check {
     Ok(())
 }
 
-/// Values a run's `positions` series may hold (8 bytes each, in memory).
-const MAX_POSITION_VALUES: f64 = 1e8;
+/// Values a run's series may hold in all (8 bytes each, in memory: every
+/// sample is kept for the analyses, and each series written with its times).
+pub const MAX_SERIES_VALUES: f64 = 1e8;
 
-/// The `positions` series keeps one value per particle per sample.
-fn positions_fit(d: &Descriptor, scene: &SceneSpec, key: &str) -> Check {
+/// The series listed, each a column per sample for every particle
+/// (`positions`, `velocities`: `<index>` in what it writes) or species it
+/// writes, hold at most `MAX_SERIES_VALUES` values per run; refused at the
+/// series that passes it, with what would be held.
+fn series_fit(d: &Descriptor, scene: &SceneSpec) -> Check {
     let (Some(t), Some(dt)) = (d.run.duration, d.run.sample_every) else {
         return Ok(());
     };
-    let values = t / dt * crate::descriptor::validate_scene::particles(scene) as f64;
-    if values <= MAX_POSITION_VALUES {
-        return Ok(());
+    let samples = (t / dt).floor() + 1.0;
+    let particles = crate::descriptor::validate_scene::particles(scene) as f64;
+    let species = scene.species.len() as f64 + f64::from(u8::from(scene.piston.is_some()));
+    let mut columns_each = 0.0;
+    let mut named = Vec::new();
+    for (i, name) in d.observe.series.iter().enumerate() {
+        let Some(entry) = catalogue::find(Kind::Series, name) else {
+            continue;
+        };
+        let columns = columns(entry.writes, particles, species);
+        columns_each += columns;
+        if columns > 1.0 {
+            named.push(format!("`{name}`: {columns} columns"));
+        }
+        let total = columns_each * samples;
+        if total > MAX_SERIES_VALUES {
+            return bad(
+                format!("observe.series.{i}"),
+                format!(
+                    "the series would hold {total:.1e} values per run ({columns_each} columns \
+                     in all{}, at {samples:.1e} samples); a run keeps at most \
+                     {MAX_SERIES_VALUES:.0e} values of series",
+                    if named.is_empty() {
+                        String::new()
+                    } else {
+                        format!(", of them {}", named.join(", "))
+                    }
+                ),
+                Some(&format!(
+                    "sample less often (`sample_every = {}` or more), run shorter, use fewer \
+                     particles, or list fewer series",
+                    round_up(t * columns_each / MAX_SERIES_VALUES)
+                )),
+            );
+        }
     }
-    bad(
-        key,
-        format!(
-            "`positions` would hold {values:.1e} values per run (every particle at every sample); \
-             a run keeps at most {MAX_POSITION_VALUES:.0e}"
-        ),
-        Some("sample less often, run shorter, or use fewer particles"),
-    )
+    Ok(())
+}
+
+/// Bins a run's per-particle histograms may have in all (each kept in up to
+/// 17 blocks while the run goes, and written with its edges).
+pub const MAX_HISTOGRAM_BINS: f64 = 5e6;
+
+/// Bins of a per-particle histogram at most (`velocity_x_each`: 60).
+const PARTICLE_BINS: f64 = 60.0;
+
+/// Per-particle histograms (`<index>` in what they write) have at most
+/// `MAX_HISTOGRAM_BINS` bins per run in all: refused at the one that passes it.
+fn histograms_fit(d: &Descriptor, scene: &SceneSpec) -> Check {
+    let particles = crate::descriptor::validate_scene::particles(scene) as f64;
+    let mut bins = 0.0;
+    for (i, name) in d.observe.histograms.iter().enumerate() {
+        let Some(entry) = catalogue::find(Kind::Histograms, name) else {
+            continue;
+        };
+        if !entry.writes.contains("<index>") {
+            continue;
+        }
+        bins += columns(entry.writes, particles, 1.0) * PARTICLE_BINS;
+        if bins > MAX_HISTOGRAM_BINS {
+            return bad(
+                format!("observe.histograms.{i}"),
+                format!(
+                    "the per-particle histograms would have {bins:.1e} bins per run (up to \
+                     {PARTICLE_BINS} for each of {particles} particles, per histogram); a run \
+                     keeps at most {MAX_HISTOGRAM_BINS:.0e}"
+                ),
+                Some(
+                    "use fewer particles, or list fewer per-particle histograms (`scaled_velocity_x` \
+                     and `scaled_speed` pool every particle into one)",
+                ),
+            );
+        }
+    }
+    Ok(())
+}
+
+/// `x` > 0 rounded up to two significant digits, as text.
+fn round_up(x: f64) -> String {
+    let digits = 1 - x.log10().floor() as i32;
+    let unit = 10f64.powi(-digits);
+    format!("{:.*}", digits.max(0) as usize, (x / unit).ceil() * unit)
+}
+
+/// Columns of a series that writes `pattern`: one per particle for
+/// `<index>`, per species for `<species>`, per word for `<a|b>`.
+fn columns(pattern: &str, particles: f64, species: f64) -> f64 {
+    pattern
+        .split('<')
+        .skip(1)
+        .filter_map(|part| part.split_once('>').map(|(hole, _)| hole))
+        .map(|hole| match hole {
+            "index" => particles,
+            "species" => species,
+            words => words.split('|').count() as f64,
+        })
+        .product()
 }
 
 /// An unknown name: said so, with the list it belongs in, the closest known

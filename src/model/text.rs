@@ -63,3 +63,17 @@ pub fn escaped(s: &str, also: &str) -> String {
 pub fn one_line(s: &str) -> String {
     s.split_whitespace().collect::<Vec<_>>().join(" ")
 }
+
+/// Items of a long list shown before "…" (and the last after it).
+pub const LIST_HEAD: usize = 5;
+
+/// A list of `len` items, `item(i)` each, joined by commas: whole if short,
+/// else the first `LIST_HEAD`, "…", the last and the count, so that a list
+/// of a million values prints a line, not megabytes.
+pub fn shortened(len: usize, item: impl Fn(usize) -> String) -> String {
+    if len <= 2 * LIST_HEAD {
+        return (0..len).map(item).collect::<Vec<_>>().join(", ");
+    }
+    let head: Vec<String> = (0..LIST_HEAD).map(&item).collect();
+    format!("{}, …, {} ({len} values)", head.join(", "), item(len - 1))
+}

@@ -13,7 +13,7 @@ use crate::stats::format::{count, num, pm};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
-pub use crate::model::text::{one_line, text};
+pub use crate::model::text::{one_line, shortened, text};
 
 /// |z| above this is flagged: more than three standard errors from theory.
 pub const Z_FLAG: f64 = 3.0;
@@ -83,7 +83,7 @@ fn what_was_run(md: &mut String, inp: &Inputs) {
         let _ = writeln!(md, "Sweep ({mode}):\n\n| parameter | values |\n|---|---|");
         for (key, values) in &sweep.parameters {
             let text = match values {
-                SweepValues::List(v) => v.iter().map(value_text).collect::<Vec<_>>().join(", "),
+                SweepValues::List(v) => shortened(v.len(), |i| value_text(&v[i])),
                 SweepValues::Range(r) => format!(
                     "{} to {} in {} {:?} steps",
                     num(r.from),

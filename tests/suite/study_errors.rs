@@ -417,7 +417,8 @@ fn observables_and_analyses() {
             )
             .replace("sample_every = 0.5", "sample_every = 1e-5"),
             &[
-                "s.toml:31:1: sweep parameter `scene.species.0.count`: value 15 makes `observe.series.1` invalid: `positions` would hold 1.5e8 values per run (every particle at every sample); a run keeps at most 1e8",
+                "s.toml:31:1: sweep parameter `scene.species.0.count`: value 15 makes `observe.series.1` invalid: the series would hold 1.6e8 values per run (16 columns in all, of them `positions`: 15 columns, at 1.0e7 samples); a run keeps at most 1e8",
+                "sample less often",
             ],
         ),
         case(
