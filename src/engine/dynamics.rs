@@ -83,8 +83,8 @@ pub trait Dynamics<const D: usize, O: Observer<D>> {
 
     /// Why the last `advance` stopped short of its `Stop`, if it did (the
     /// clock stood still, or the events allowed were spent): such a run
-    /// cannot go on. A fixed step always moves its clock on, so the default
-    /// is never.
+    /// cannot go on. The default: never (a fixed step always moves its
+    /// clock on; it halts only on its event limit).
     fn halted(&self) -> Option<Halt> {
         None
     }
