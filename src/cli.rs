@@ -598,6 +598,7 @@ pub fn describe_plan(loaded: &Loaded, specs: &[RunSpec], threads: usize) -> Stri
         return out;
     }
     let collisions: f64 = known.iter().map(|(c, n)| c.collisions * n).sum();
+    let events: f64 = known.iter().map(|(c, n)| c.events * n).sum();
     let seconds: f64 = known.iter().map(|(c, n)| c.seconds() * n).sum();
     let busy = threads.min(specs.len()).max(1);
     let dims: BTreeSet<usize> = known.iter().map(|(c, _)| c.dimension).collect();
@@ -611,12 +612,13 @@ pub fn describe_plan(loaded: &Loaded, specs: &[RunSpec], threads: usize) -> Stri
         })
         .collect();
     out += &format!(
-        "  estimated collisions: ~{} pair collisions ({} per run on average; kinetic theory of the initial state)\n",
+        "  estimated collisions: ~{} pair collisions ({} per run on average; kinetic theory of the initial state), ~{} events with the wall hits and neighbourhood renewals\n",
         approx(collisions),
-        approx(collisions / specs.len().max(1) as f64)
+        approx(collisions / specs.len().max(1) as f64),
+        approx(events)
     );
     out += &format!(
-        "  estimated time: ~{} on {busy} {}, at a nominal {} (docs/performance.md); an estimate: sampling, analyses and dense or uneven scenes change it\n",
+        "  estimated time: ~{} on {busy} {}, at a nominal {} (docs/performance.md; any event counted as a collision); an estimate: sampling, analyses and dense or uneven scenes change it\n",
         human_duration(seconds / busy as f64),
         if busy == 1 { "thread" } else { "threads" },
         rates.join(", ")

@@ -12,6 +12,8 @@ pub mod point;
 pub mod sweep;
 pub mod text;
 pub mod validate;
+pub mod validate_collisions;
 pub mod validate_integrator;
 pub mod validate_observe;
+pub mod validate_room;
 pub mod validate_scene;

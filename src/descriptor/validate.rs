@@ -48,6 +48,8 @@ impl Points {
 /// What `point` checks beside `[run]` and the scene.
 fn rest(d: &Descriptor, scene: &SceneSpec) -> Check {
     crate::descriptor::validate_integrator::integrator(d, scene)?;
+    crate::descriptor::validate_collisions::reachable(d, scene)?;
+    crate::descriptor::validate_room::room(scene)?;
     crate::descriptor::validate_observe::observe(d, scene)?;
     crate::descriptor::validate_observe::analysis(d, scene)
 }
@@ -184,7 +186,7 @@ pub fn run(d: &Descriptor) -> Check {
 pub const MAX_TIME: f64 = 1e12;
 
 /// Samples one run may take: every one is kept in memory for the analyses.
-const MAX_SAMPLES: f64 = 1e7;
+pub const MAX_SAMPLES: f64 = 1e7;
 
 /// The shape of `[sweep]`: values present, ranges sound, zip lengths equal.
 pub fn sweep(d: &Descriptor) -> Check {

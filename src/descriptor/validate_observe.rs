@@ -36,6 +36,7 @@ pub fn observe(d: &Descriptor, scene: &SceneSpec) -> Check {
     histograms_fit(d, scene)?;
     if let Some(movie) = &o.movie {
         movie_fits(movie, scene)?;
+        movie_within_run(movie, d)?;
     }
     Ok(())
 }
@@ -76,6 +77,32 @@ fn movie_fits(movie: &MovieSpec, scene: &SceneSpec) -> Check {
         );
     }
     Ok(())
+}
+
+/// A movie films its run from the start, so it is no longer than the run
+/// (equilibration included). A run stopped by a collision count has no
+/// length to compare with before it runs: the cost check weighs its
+/// movie's events against the run's, and filming stops where the run did.
+fn movie_within_run(movie: &MovieSpec, d: &Descriptor) -> Check {
+    let Some(t) = d.run.duration else {
+        return Ok(());
+    };
+    let length = t + d.run.equilibrate;
+    if movie.duration <= length {
+        return Ok(());
+    }
+    bad(
+        "observe.movie.duration",
+        format!(
+            "{} is longer than the run it films, which lasts {} (`equilibrate` + `duration`)",
+            compact(movie.duration),
+            compact(length)
+        ),
+        Some(&format!(
+            "film the run's first moments: `duration = {}` at most",
+            compact(length)
+        )),
+    )
 }
 
 /// Values a run's series may hold in all (8 bytes each, in memory: every

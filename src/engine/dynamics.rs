@@ -36,6 +36,7 @@
 //! engine, not a break of the contract.
 
 use super::boundary::SimBox;
+use super::halt::Halt;
 use super::neighbours::Neighbourhood;
 use super::observer::Observer;
 use super::simulation::{Counts, Simulation, Stop};
@@ -79,6 +80,19 @@ pub trait Dynamics<const D: usize, O: Observer<D>> {
 
     /// Hand back the observer when the run is over.
     fn into_observer(self: Box<Self>) -> O;
+
+    /// Why the last `advance` stopped short of its `Stop`, if it did (the
+    /// clock stood still, or the events allowed were spent): such a run
+    /// cannot go on. The default: never (a fixed step always moves its
+    /// clock on; it halts only on its event limit).
+    fn halted(&self) -> Option<Halt> {
+        None
+    }
+
+    /// Allow at most `events` of `counts().events` in all; past them
+    /// `advance` stops short and `halted` says so. The default allows any
+    /// number.
+    fn limit_events(&mut self, _events: u64) {}
 
     /// What this method measures about its own errors, as named scalars for
     /// the run's results (a stepper's overlaps, say); the exact engine has
@@ -125,5 +139,13 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Dynamics<D, O> for Sim
 
     fn into_observer(self: Box<Self>) -> O {
         Simulation::into_observer(*self)
+    }
+
+    fn halted(&self) -> Option<Halt> {
+        Simulation::halted(self)
+    }
+
+    fn limit_events(&mut self, events: u64) {
+        Simulation::limit_events(self, events);
     }
 }

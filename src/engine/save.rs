@@ -292,6 +292,10 @@ impl<const D: usize, N: Persist<D>, O: Observer<D>> Simulation<D, N, O> {
             batch: super::contacts::Batch::new(),
             prefetch_partners: super::simulation::worth_prefetching(n),
             counts,
+            same_instant: 0,
+            stall_after: super::halt::stall_bound(n),
+            event_limit: u64::MAX,
+            halt: None,
             observer,
         })
     }

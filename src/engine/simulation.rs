@@ -18,6 +18,7 @@ use super::boundary::{SimBox, Wall, wall_time};
 use super::build::{BuildError, check_overlaps, validate};
 use super::collide::{bounce, line_contact_time};
 use super::contacts::{BATCH, Batch};
+use super::halt::{Halt, stall_bound};
 use super::neighbours::{Image, Neighbourhood, PLANE, image_shift, no_shift, separation};
 use super::next::{Event, Next, Packed};
 use super::observer::{Observer, PairCollision, Snapshot, WallHit};
@@ -77,6 +78,14 @@ pub struct Simulation<const D: usize, N: Neighbourhood<D>, O: Observer<D>> {
     /// Room for a prediction's partners (kept to spare its setting up).
     pub(super) batch: Batch<D>,
     pub counts: Counts,
+    /// Events handled in a row without the clock moving on, and how many
+    /// make a stalled clock (`halt::stall_bound`).
+    pub(super) same_instant: u64,
+    pub(super) stall_after: u64,
+    /// Events the run may take in all (`limit_events`).
+    pub(super) event_limit: u64,
+    /// Set when a run stopped short of its `Stop` and cannot go on.
+    pub(super) halt: Option<Halt>,
     pub observer: O,
 }
 
@@ -115,6 +124,10 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
             batch: Batch::new(),
             prefetch_partners: worth_prefetching(n),
             counts: Counts::default(),
+            same_instant: 0,
+            stall_after: stall_bound(n),
+            event_limit: u64::MAX,
+            halt: None,
             observer,
         };
         for i in 0..n {
@@ -183,8 +196,24 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         degrees_of_freedom(&self.particles, &self.sim_box)
     }
 
-    /// Run until `stop`, taking samples on the way.
+    /// Why the last `run` stopped short of its `Stop`, if it did; a halted
+    /// system does not run again.
+    pub fn halted(&self) -> Option<Halt> {
+        self.halt
+    }
+
+    /// Allow at most `events` events in all (`counts.events`): past them
+    /// `run` stops short and `halted` says so.
+    pub fn limit_events(&mut self, events: u64) {
+        self.event_limit = events;
+    }
+
+    /// Run until `stop`, taking samples on the way; short of it if the clock
+    /// stalls or the event limit is spent (see `halted`).
     pub fn run(&mut self, stop: Stop) {
+        if self.halt.is_some() {
+            return;
+        }
         let end_collisions = match stop {
             Stop::Collisions(n) => self.counts.collisions.saturating_add(n),
             Stop::Time(_) => u64::MAX,
@@ -206,6 +235,35 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
                 continue;
             }
             if t > end_time || self.counts.collisions >= end_collisions || t.is_infinite() {
+                if t.is_infinite()
+                    && end_time.is_infinite()
+                    && self.counts.collisions < end_collisions
+                {
+                    self.halt = Some(Halt::Still {
+                        collisions: self.counts.collisions,
+                    });
+                }
+                break;
+            }
+            // A clock that does not move on (or is not a number) is counted;
+            // one compare per event while it moves.
+            if t > self.now {
+                self.same_instant = 0;
+            } else {
+                self.same_instant += 1;
+                if self.same_instant >= self.stall_after {
+                    self.halt = Some(Halt::Stalled {
+                        time: self.origin + t,
+                        events: self.same_instant,
+                    });
+                    break;
+                }
+            }
+            if self.counts.events >= self.event_limit {
+                self.halt = Some(Halt::Spent {
+                    limit: self.event_limit,
+                    collisions: self.counts.collisions,
+                });
                 break;
             }
             self.now = t;
@@ -227,7 +285,7 @@ impl<const D: usize, N: Neighbourhood<D>, O: Observer<D>> Simulation<D, N, O> {
         }
         self.stamp_partners();
         self.neighbours.catch_up();
-        if end_absolute.is_finite() {
+        if end_absolute.is_finite() && self.halt.is_none() {
             self.now = end_absolute - self.origin;
         }
     }

@@ -462,10 +462,12 @@ fn write_manifest(
 /// that shows it.
 fn film_run(runs: &Runs, movie: &MovieSpec, dir: &Path) -> anyhow::Result<Option<ReportSection>> {
     let named = runs.iter().find(|(s, _)| s.run_id == movie.run);
-    let Some((spec, _)) = named.or_else(|| runs.iter().min_by_key(|(s, _)| s.run_id)) else {
+    let Some((spec, output)) = named.or_else(|| runs.iter().min_by_key(|(s, _)| s.run_id)) else {
         return Ok(None);
     };
-    let film = super::movie::film(spec, movie)
+    // The movie films its run again: twice the run's events is room enough.
+    let budget = output.events.saturating_mul(2).saturating_add(1_000_000);
+    let film = super::movie::film(spec, movie, budget)
         .with_context(|| format!("filming run {} for the movie", spec.run_id))?;
     write_atomic(
         &dir.join(MOVIE_FILE),

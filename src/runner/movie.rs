@@ -10,17 +10,20 @@ use crate::observe::film::Filming;
 use crate::scene;
 use anyhow::{Context, anyhow, bail};
 
-/// The frames of `spec`'s run over `movie.duration` from time 0.
-pub fn film(spec: &RunSpec, movie: &MovieSpec) -> anyhow::Result<Film> {
+/// The frames of `spec`'s run over `movie.duration` from time 0, in at most
+/// `max_events` events (the run's own, with room to spare: validate keeps a
+/// movie within its run, and the filming stops where the budget does, with
+/// the frames taken so far).
+pub fn film(spec: &RunSpec, movie: &MovieSpec, max_events: u64) -> anyhow::Result<Film> {
     let scene = scene::resolve(&spec.descriptor.scene).map_err(|e| anyhow!(e))?;
     match scene.dimension().map_err(|e| anyhow!(e))? {
         1 => {
             let (built, seed) = start::<1>(spec, &scene)?;
             let camera = camera(&built, spec);
-            shoot::<1, Chain>(&built, camera, seed, movie)
+            shoot::<1, Chain>(&built, camera, seed, movie, max_events)
         }
-        2 => balls::<2>(spec, &scene, movie),
-        3 => balls::<3>(spec, &scene, movie),
+        2 => balls::<2>(spec, &scene, movie, max_events),
+        3 => balls::<3>(spec, &scene, movie, max_events),
         d => bail!("scene.dimension = {d}; use 1, 2 or 3"),
     }
 }
@@ -41,13 +44,14 @@ fn balls<const D: usize>(
     spec: &RunSpec,
     scene: &crate::model::scene::SceneSpec,
     movie: &MovieSpec,
+    max_events: u64,
 ) -> anyhow::Result<Film> {
     let (built, seed) = start::<D>(spec, scene)?;
     let camera = camera(&built, spec);
     if built.particles.iter().any(|p| p.is_plane()) {
-        shoot::<D, NeighbourList<D, true>>(&built, camera, seed, movie)
+        shoot::<D, NeighbourList<D, true>>(&built, camera, seed, movie, max_events)
     } else {
-        shoot::<D, NeighbourList<D>>(&built, camera, seed, movie)
+        shoot::<D, NeighbourList<D>>(&built, camera, seed, movie, max_events)
     }
 }
 
@@ -56,6 +60,7 @@ fn shoot<const D: usize, N: Neighbourhood<D>>(
     camera: Filming,
     seed: u64,
     movie: &MovieSpec,
+    max_events: u64,
 ) -> anyhow::Result<Film> {
     let mut sim: Simulation<D, N, Filming> =
         Simulation::new(built.particles.clone(), built.sim_box, camera, seed)
@@ -65,8 +70,15 @@ fn shoot<const D: usize, N: Neighbourhood<D>>(
     sim.sample_every(Some(every));
     // Half a frame past the end: the last frame is at `duration` whatever
     // the rounding of the sample times, and no frame comes after it.
+    sim.limit_events(max_events);
     sim.run(Stop::Time(movie.duration + 0.5 * every));
+    let halted = sim.halted();
     let mut film = sim.into_observer().into_film();
+    if let Some(halt) = halted
+        && film.times.len() < 2
+    {
+        bail!("filming stopped before its second frame: {halt}");
+    }
     film.times.truncate(frames);
     for track in &mut film.tracks {
         track.x.truncate(frames);

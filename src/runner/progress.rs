@@ -126,6 +126,7 @@ pub fn human_duration(seconds: f64) -> String {
         s if s < 5400.0 => format!("{:.0} min", s / 60.0),
         s if s < 172_800.0 => format!("{:.1} h", s / 3600.0),
         s if s < 8.64e6 => format!("{:.1} days", s / 86_400.0),
+        s if s < 3.156e8 => format!("{:.1} years", s / 3.156e7),
         s if s < 3.156e11 => format!("{:.0} years", s / 3.156e7),
         s => format!("{:.1e} years", s / 3.156e7),
     }

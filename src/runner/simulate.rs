@@ -197,7 +197,7 @@ fn advance<const D: usize>(
             Target::Time(t) => Stop::Time(t),
             Target::Collisions(c) => Stop::Collisions(c.saturating_sub(sim.counts().collisions)),
         });
-        return Ok(());
+        return going_on(sim.as_ref());
     };
     let stretch = (every / 10).clamp(Duration::from_millis(2), Duration::from_secs(1));
     // Simulation time or collisions per stretch, adapted to take `stretch`.
@@ -227,6 +227,7 @@ fn advance<const D: usize>(
         };
         let began = Instant::now();
         sim.advance(stop);
+        going_on(sim.as_ref())?;
         if last {
             return Ok(());
         }
@@ -240,6 +241,15 @@ fn advance<const D: usize>(
             save(sim, phase, clock)?;
             clock.last_save = Instant::now();
         }
+    }
+}
+
+/// An error if the dynamics stopped short of their stop (a stalled clock,
+/// the events allowed spent): the run fails with the reason.
+fn going_on<const D: usize>(sim: &dyn Checkpointable<D>) -> anyhow::Result<()> {
+    match sim.halted() {
+        Some(halt) => bail!("the run cannot go on: {halt}"),
+        None => Ok(()),
     }
 }
 
@@ -385,7 +395,12 @@ fn simulate<const D: usize>(
     };
     let target = match d.run.duration {
         Some(t) => Target::Time(start + t),
-        None => Target::Collisions(end_collisions),
+        None => {
+            let left = end_collisions.saturating_sub(sim.counts().collisions);
+            let budget = event_budget(d, left);
+            sim.limit_events(sim.counts().events.saturating_add(budget));
+            Target::Collisions(end_collisions)
+        }
     };
     let measuring = Phase::Measuring {
         start,
@@ -448,6 +463,20 @@ fn simulate<const D: usize>(
     // The runner adds what this thread spent now.
     out.cpu_seconds = clock.cpu_before;
     Ok(out)
+}
+
+/// Events a run may take for `left` more pair collisions: a thousand times
+/// the events per collision the estimate expects, and 10^9 (a few minutes)
+/// more, so that a run whose pairs meet far more rarely than expected (or
+/// never: two disks gliding side by side) fails instead of running forever.
+fn event_budget(d: &crate::model::descriptor::Descriptor, left: u64) -> u64 {
+    let per_collision = crate::runner::estimate::run_cost(d)
+        .map(|c| c.event_rate / c.rate)
+        .filter(|r| r.is_finite())
+        .unwrap_or(1.0)
+        .max(1.0);
+    // Saturates at u64::MAX.
+    (1e9 + 1e3 * per_collision * left as f64) as u64
 }
 
 /// Most points kept per stored series. Analyses above saw every sample; the

@@ -179,7 +179,9 @@ pub fn build<const D: usize>(spec: &SceneSpec, rng: &mut ChaCha8Rng) -> Result<B
     })
 }
 
-fn sim_box<const D: usize>(spec: &SceneSpec) -> Result<SimBox<D>, String> {
+/// The box a scene runs in: its lengths, and per axis walls (hard or
+/// thermal) or a periodic boundary.
+pub(crate) fn sim_box<const D: usize>(spec: &SceneSpec) -> Result<SimBox<D>, String> {
     let size = fixed::<D>(spec.box_size.as_deref().unwrap_or_default(), "scene.box")?;
     let boundary = spec
         .boundary

@@ -20,6 +20,7 @@ mod expansion_study;
 mod heat_study;
 mod hostile_caps;
 mod hostile_cluster;
+mod hostile_endless;
 mod hostile_fuzz;
 mod hostile_input;
 mod hostile_names;

@@ -35,7 +35,7 @@ fn the_film_is_the_run_bit_for_bit() {
     let loaded = parse("film.toml", RODS).unwrap();
     let spec = plan(&loaded).unwrap().remove(0);
     let movie: MovieSpec = loaded.descriptor.observe.movie.unwrap();
-    let film = film(&spec, &movie).unwrap();
+    let film = film(&spec, &movie, u64::MAX).unwrap();
     assert_eq!(film.times.len(), 49);
     assert_eq!(film.times[0], 0.0);
     assert!((film.times[48] - 12.0).abs() < 1e-12);
@@ -70,6 +70,7 @@ fn the_film_is_an_animated_svg_with_a_frame_per_value() {
             frames: 7,
             run: 0,
         },
+        u64::MAX,
     )
     .unwrap();
     let text = svg(&film);

@@ -73,12 +73,13 @@ pub struct Grid<const D: usize> {
 }
 
 impl<const D: usize> Grid<D> {
-    /// A grid for `points` points whose cells are at least `min_width` wide,
-    /// but no more than a few cells per point in all, so a dilute gas in a
-    /// huge box does not allocate a huge grid. Periodic axes need at least
-    /// three cells, so that no point is found twice; the caller checks that.
-    /// No axis has more than `MAX_CELLS`, so that a centre can count them.
-    pub fn new(points: usize, min_width: f64, sim_box: &SimBox<D>) -> Self {
+    /// The cells per axis of a grid for `points` points whose cells are at
+    /// least `min_width` wide, but no more than a few cells per point in
+    /// all, so a dilute gas in a huge box does not allocate a huge grid.
+    /// Periodic axes need at least three cells, so that no point is found
+    /// twice; the caller checks that. No axis has more than `MAX_CELLS`, so
+    /// that a centre can count them.
+    pub fn cells_for(points: usize, min_width: f64, sim_box: &SimBox<D>) -> [u32; D] {
         let budget = (4 * points + 64) as f64;
         let mut n = [1u32; D];
         for k in 0..D {
@@ -97,6 +98,11 @@ impl<const D: usize> Grid<D> {
                 *x = ((*x as f64 * f).floor() as u32).max(least).min(*x);
             }
         }
+        n
+    }
+
+    /// A grid of `n` cells per axis (`cells_for`) for `points` points.
+    pub fn new(points: usize, n: [u32; D], sim_box: &SimBox<D>) -> Self {
         let mut stride = [1usize; D];
         for k in 1..D {
             stride[k] = stride[k - 1] * n[k - 1] as usize;
@@ -300,7 +306,7 @@ mod tests {
     #[test]
     fn a_cell_that_fills_spills_and_keeps_every_point() {
         let sim_box = SimBox::periodic([9.0; 3]);
-        let mut grid = Grid::<3>::new(48, 3.0, &sim_box);
+        let mut grid = Grid::<3>::new(48, Grid::<3>::cells_for(48, 3.0, &sim_box), &sim_box);
         let mut filed = vec![None; 48];
         let mut place = |grid: &mut Grid<3>, i: usize, x: Vector<3>| {
             let steps = steps_at(grid, &x);
@@ -355,7 +361,7 @@ mod tests {
     fn no_point_in_reach_is_left_out<const D: usize>(sim_box: SimBox<D>, reach: f64) {
         use rand::{RngExt, SeedableRng};
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(11);
-        let mut grid = Grid::<D>::new(3000, reach, &sim_box);
+        let mut grid = Grid::<D>::new(3000, Grid::<D>::cells_for(3000, reach, &sim_box), &sim_box);
         let length: [i64; D] = std::array::from_fn(|k| (grid.n[k] as i64) << FINE);
         let step: Vector<D> = std::array::from_fn(|k| grid.width[k] / (1 << FINE) as f64);
         let at = |rng: &mut rand_chacha::ChaCha8Rng| -> [u32; D] {

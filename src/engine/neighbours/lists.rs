@@ -45,6 +45,102 @@ fn shell_per_free_path<const D: usize>(density: f64, sigma: f64) -> f64 {
     1.0 + 0.2 * ((packing - 0.35) / 0.10).clamp(0.0, 1.0)
 }
 
+/// The shell for `balls` balls of largest radius `largest` in `sim_box`:
+/// the distance a particle may wander from its centre. Wider means rarer
+/// renewals but longer lists; about a mean free path balances the two.
+/// Capped so that periodic axes keep three cells.
+fn shell_for<const D: usize>(
+    balls: usize,
+    largest: f64,
+    sim_box: &SimBox<D>,
+) -> Result<f64, (Option<usize>, String)> {
+    let count = balls.max(1) as f64;
+    let sigma = 2.0 * largest;
+    let density = count / sim_box.volume();
+    // Ideal-gas mean free path 1 / (sqrt2 rho s), s the collision cross
+    // section (2 sigma in 2D, pi sigma^2 in 3D), against the spacing.
+    let cross_section = if D == 2 {
+        2.0 * sigma
+    } else {
+        std::f64::consts::PI * sigma * sigma
+    };
+    let free_path = 1.0 / (std::f64::consts::SQRT_2 * density * cross_section);
+    let spacing = density.powf(-1.0 / D as f64);
+    let per = shell_per_free_path::<D>(density, sigma);
+    let mut shell = (per * free_path).clamp(0.1 * sigma, spacing.max(sigma));
+    if shell.is_nan() || shell <= 0.0 {
+        shell = spacing;
+    }
+    for k in 0..D {
+        if sim_box.axes[k].is_periodic() {
+            let room = sim_box.size[k] / 6.0 - largest;
+            if room < 0.01 * sigma.max(f64::MIN_POSITIVE) {
+                return Err((
+                    Some(k),
+                    format!(
+                        "periodic axis {k} is {} long, too short for particles of diameter {sigma}; \
+                     make the box at least {} long or use walls on that axis",
+                        sim_box.size[k],
+                        3.0 * sigma * 1.02
+                    ),
+                ));
+            }
+            shell = shell.min(room);
+        }
+    }
+    Ok(shell)
+}
+
+/// The shell and the grid's cells per axis that neighbour lists for
+/// `points` points (`balls` of them balls of largest radius `largest`, the
+/// rest a plane) in `sim_box` are built with; an error where they cannot
+/// follow the particles: a shell that is not a finite length (a box whose
+/// volume is not a number), or centres filed (to 1/2^12 of a cell, and the
+/// cells are at most a few per point) more coarsely than half the shell,
+/// which would renew a particle's neighbourhood again and again at one
+/// instant. `study validate` asks the same of a scene.
+/// The error names the axis at fault, if one is.
+pub fn layout<const D: usize>(
+    points: usize,
+    balls: usize,
+    largest: f64,
+    sim_box: &SimBox<D>,
+) -> Result<(f64, [u32; D]), (Option<usize>, String)> {
+    let shell = shell_for(balls, largest, sim_box)?;
+    if !(shell.is_finite() && shell > 0.0) {
+        return Err((
+            None,
+            format!(
+                "the box's volume ({:e}) is beyond what the neighbour lists can divide",
+                sim_box.volume()
+            ),
+        ));
+    }
+    let cells = Grid::cells_for(points, 2.0 * (largest + shell), sim_box);
+    let step: Vector<D> = std::array::from_fn(|k| {
+        sim_box.size[k] / ((cells[k] as u64) << super::centres::FINE) as f64
+    });
+    let coarse = norm2(&step).sqrt();
+    if coarse > 0.5 * shell {
+        let k = (0..D)
+            .max_by(|&a, &b| step[a].total_cmp(&step[b]))
+            .unwrap_or(0);
+        return Err((
+            Some(k),
+            format!(
+                "axis {k} is too long for {balls} particles: the engine's grid (at most a few \
+             cells per particle) files positions along it to within {:.2e}, coarser than \
+             half the {:.2e} a particle moves before its neighbours are looked up again; \
+             with this many particles the axis may be about {:.2e} long at most",
+                step[k],
+                shell,
+                sim_box.size[k] * 0.5 * shell / coarse
+            ),
+        ));
+    }
+    Ok((shell, cells))
+}
+
 #[inline(always)]
 fn pack(j: usize, image: Image) -> u32 {
     (j as u32) << IMAGE_BITS | image as u32
@@ -127,46 +223,6 @@ struct CellsAhead<const D: usize> {
 }
 
 impl<const D: usize, const PLANES: bool> NeighbourList<D, PLANES> {
-    /// The shell: the distance a particle may wander from its centre. Wider
-    /// means rarer renewals but longer lists; about a mean free path
-    /// balances the two. Capped so that periodic axes keep three cells.
-    fn shell_for(particles: &[Particle<D>], sim_box: &SimBox<D>) -> Result<f64, String> {
-        let balls = particles.iter().filter(|p| !p.is_plane());
-        let largest = balls.clone().map(|p| p.radius).fold(0.0, f64::max);
-        let count = balls.count().max(1) as f64;
-        let sigma = 2.0 * largest;
-        let density = count / sim_box.volume();
-        // Ideal-gas mean free path 1 / (sqrt2 rho s), s the collision cross
-        // section (2 sigma in 2D, pi sigma^2 in 3D), against the spacing.
-        let cross_section = if D == 2 {
-            2.0 * sigma
-        } else {
-            std::f64::consts::PI * sigma * sigma
-        };
-        let free_path = 1.0 / (std::f64::consts::SQRT_2 * density * cross_section);
-        let spacing = density.powf(-1.0 / D as f64);
-        let per = shell_per_free_path::<D>(density, sigma);
-        let mut shell = (per * free_path).clamp(0.1 * sigma, spacing.max(sigma));
-        if shell.is_nan() || shell <= 0.0 {
-            shell = spacing;
-        }
-        for k in 0..D {
-            if sim_box.axes[k].is_periodic() {
-                let room = sim_box.size[k] / 6.0 - largest;
-                if room < 0.01 * sigma.max(f64::MIN_POSITIVE) {
-                    return Err(format!(
-                        "periodic axis {k} is {} long, too short for particles of diameter {sigma}; \
-                         make the box at least {} long or use walls on that axis",
-                        sim_box.size[k],
-                        3.0 * sigma * 1.02
-                    ));
-                }
-                shell = shell.min(room);
-            }
-        }
-        Ok(shell)
-    }
-
     fn list(&self, i: usize) -> &[u32] {
         self.lists.get(i)
     }
@@ -404,15 +460,16 @@ impl<const D: usize, const PLANES: bool> Neighbourhood<D> for NeighbourList<D, P
                     .into(),
             );
         }
-        let shell = Self::shell_for(particles, sim_box)?;
         let largest_radius = particles
             .iter()
             .filter(|p| !p.is_plane())
             .map(|p| p.radius)
             .fold(0.0, f64::max);
         let n = particles.len();
+        let balls = n - usize::from(plane.is_some());
+        let (shell, cells) = layout(n, balls, largest_radius, sim_box).map_err(|(_, why)| why)?;
         let reach = 2.0 * (largest_radius + shell);
-        let grid = Grid::new(n, reach, sim_box);
+        let grid = Grid::new(n, cells, sim_box);
         let mut lists = NeighbourList {
             shell,
             size: sim_box.size,

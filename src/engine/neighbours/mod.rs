@@ -9,7 +9,7 @@ mod lists;
 mod store;
 
 pub use chain::Chain;
-pub use lists::NeighbourList;
+pub use lists::{NeighbourList, layout};
 
 use super::bodies::Body;
 use super::boundary::SimBox;

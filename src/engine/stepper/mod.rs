@@ -15,6 +15,7 @@ use super::bodies::Bodies;
 use super::boundary::SimBox;
 use super::build::{BuildError, validate};
 use super::dynamics::Dynamics;
+use super::halt::Halt;
 use super::observer::{Observer, Snapshot};
 use super::particle::Particle;
 use super::simulation::{Counts, Stop, degrees_of_freedom};
@@ -42,6 +43,9 @@ pub struct Stepper<const D: usize, O: Observer<D>> {
     samples_taken: u64,
     /// The particles as a snapshot shows them, refreshed at each sample.
     view: Bodies<D>,
+    /// Events (particle moves) allowed in all, and whether they ran out.
+    event_limit: u64,
+    halt: Option<Halt>,
     observer: O,
 }
 
@@ -100,6 +104,8 @@ impl<const D: usize, O: Observer<D>> Stepper<D, O> {
             tally: Tally::default(),
             rng: ChaCha8Rng::seed_from_u64(seed),
             counts: Counts::default(),
+            event_limit: u64::MAX,
+            halt: None,
             sample_every: None,
             sample_start: 0.0,
             samples_taken: 0,
@@ -146,6 +152,13 @@ impl<const D: usize, O: Observer<D>> Dynamics<D, O> for Stepper<D, O> {
             Stop::Collisions(n) => (f64::INFINITY, self.counts.collisions.saturating_add(n)),
         };
         while self.time < end && self.counts.collisions < collisions {
+            if self.counts.events >= self.event_limit {
+                self.halt = Some(Halt::Spent {
+                    limit: self.event_limit,
+                    collisions: self.counts.collisions,
+                });
+                break;
+            }
             // The last step is shortened to land on `end` exactly; one that
             // would leave a sliver of a step takes the sliver along.
             let next = self.time + self.dt;
@@ -162,6 +175,14 @@ impl<const D: usize, O: Observer<D>> Dynamics<D, O> for Stepper<D, O> {
 
     fn time(&self) -> f64 {
         self.time
+    }
+
+    fn halted(&self) -> Option<Halt> {
+        self.halt
+    }
+
+    fn limit_events(&mut self, events: u64) {
+        self.event_limit = events;
     }
 
     fn kinetic_energy(&self) -> f64 {

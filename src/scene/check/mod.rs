@@ -9,6 +9,7 @@
 //! at its smallest here, so only what is certain to fail is refused.
 
 mod fit;
+mod grid;
 mod layout;
 mod motion;
 mod order;
@@ -74,12 +75,32 @@ pub fn scene(s: &SceneSpec) -> Check {
     }
     species::species(s)?;
     fit::particles_fit(s)?;
+    let volume: f64 = size.iter().product();
+    if !(volume.is_finite() && volume >= f64::MIN_POSITIVE) {
+        return bad(
+            "scene.box",
+            format!(
+                "lengths {} give a volume of {}, beyond what a 64-bit number holds",
+                size.iter()
+                    .map(|&l| compact(l))
+                    .collect::<Vec<_>>()
+                    .join(" x "),
+                if volume > 1.0 {
+                    "more than 1e308"
+                } else {
+                    "less than 1e-308"
+                }
+            ),
+            Some("work in reduced units: particles about 1 across, boxes from about 1 to 1e6 long"),
+        );
+    }
     placement(s)?;
     order::order(s)?;
     motion::velocities(s)?;
     piston::piston(s)?;
     walls::thermal_walls(s)?;
-    layout::layout(s)
+    layout::layout(s)?;
+    grid::grid(s)
 }
 
 /// A list with one entry per axis.

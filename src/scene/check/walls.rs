@@ -1,7 +1,10 @@
-//! Thermal walls: on an axis that exists and has walls, one per side.
+//! Thermal walls: on an axis that exists and has walls, one per side, and
+//! no hotter than the gas may be: it heats up to the wall's temperature,
+//! so the cap on the start's energy (`motion::MAX_ENERGY`) holds for it too.
 
-use super::dimension;
-use crate::model::problem::{Check, bad, positive};
+use super::motion::MAX_ENERGY;
+use super::{dimension, particles};
+use crate::model::problem::{Check, bad, compact, positive};
 use crate::model::scene::{Boundary, SceneSpec, Side};
 
 pub fn thermal_walls(s: &SceneSpec) -> Check {
@@ -30,6 +33,21 @@ pub fn thermal_walls(s: &SceneSpec) -> Check {
             );
         }
         positive(&key("temperature"), w.temperature)?;
+        let energy = 0.5 * d as f64 * particles(s).max(1) as f64 * w.temperature;
+        if energy > MAX_ENERGY {
+            return bad(
+                key("temperature"),
+                format!(
+                    "{} heats the gas to a kinetic energy of {}, more than the {} a run can carry",
+                    compact(w.temperature),
+                    compact(energy),
+                    compact(MAX_ENERGY)
+                ),
+                Some(
+                    "work in reduced units (kT about 1): a hotter wall only makes time run faster",
+                ),
+            );
+        }
         if s.thermal_walls[..i]
             .iter()
             .any(|o| o.axis == w.axis && o.side == w.side)
