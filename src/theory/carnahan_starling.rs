@@ -1,7 +1,7 @@
 //! Hard spheres, Carnahan and Starling (J. Chem. Phys. 51, 635, 1969):
 //! Z = (1 + eta + eta^2 - eta^3) / (1 - eta)^3, from rounding the virial
 //! coefficients to b_k = k^2 + k - 2 (B4 = 18 v^3 against the exact
-//! 18.365). It is 0.27 % below the virial series through B10 with its tail
+//! 18.365). It is 0.258 % below the virial series through B10 with its tail
 //! at eta = 0.3 (see `sphere_virial`, `carnahan_starling_kolafa`) and is a fluid
 //! equation: above freezing (eta = 0.494) the stable phase is the crystal.
 

@@ -5,9 +5,8 @@
 //! It gives B2 and B3 exactly and B4 = 18.333 v^3 (exact 18.365, Carnahan-
 //! Starling 18), and at eta = 0.3 it is within 6e-5 of the virial series
 //! through B10 with its tail (`sphere_virial::resummed`), where Carnahan-
-//! Starling is 0.27 % low. (This formula was called Kolafa-Labik-Malijevsky
-//! here before; their 2004 equation is a longer fit in eta/(1 - eta) that
-//! this file does not claim to be.) It is a fluid equation: above freezing
+//! Starling is 0.258 % low. (It is not the Kolafa-Labik-Malijevsky equation
+//! of 2004, a longer fit in eta/(1 - eta).) It is a fluid equation: above freezing
 //! (eta = 0.494) the stable phase is the crystal.
 
 /// Compressibility factor of the hard-sphere fluid at packing fraction `eta`.

@@ -2,8 +2,10 @@
 //! first, and collisions share that heat with the other axes. The gas is a
 //! relaxing medium (Debye): compressed slowly it follows its adiabat,
 //! gamma_0 = (d + 2)/d; quickly, the collisionless one, gamma_inf = 3; in
-//! between it lags behind and dissipates, as a gas with a bulk viscosity
-//! does. Each gas's stiffness is k (1 + (Delta/gamma_0) i w tau / (1 + i w tau)),
+//! between it lags behind and dissipates: a compression along one axis is
+//! partly a shear, which the shear viscosity resists (dilute hard disks have
+//! no bulk viscosity; uniaxial strain gives sigma_xx = eta d(eps)/dt in 2D).
+//! Each gas's stiffness is k (1 + (Delta/gamma_0) i w tau / (1 + i w tau)),
 //! Delta = gamma_inf - gamma_0, tau the time in which the anisotropy of its
 //! kinetic energy relaxes at fixed volume: tau = eta / p, with eta the
 //! Chapman–Enskog shear viscosity (first Sonine approximation,

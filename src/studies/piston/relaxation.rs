@@ -240,8 +240,9 @@ non-adiabatic effects, and in practice keeps it for as long as we can watch. ";
 const ACROSS_X: &str = "In 2D the piston squeezes each gas along x only: the x-motion heats first, and collisions between \
 disks share the heat with y in about a mean free time τ_x. While compressing, the gas is hotter along x than \
 its adiabat says and pushes back harder; while expanding, the reverse: the loop does not close, and the piston \
-loses energy every swing. This is the gas's bulk viscosity, and 1D has nothing like it (a line has no other \
-axis). Treating each gas as a relaxing spring (Debye: stiffness k (1 + ½ iωτ_x/(1 + iωτ_x)) in 2D), the \
+loses energy every swing. A compression along x alone is partly a shear, and dilute hard disks (whose bulk \
+viscosity is zero) resist it by their shear viscosity η (σ_xx = η ε̇ in 2D); 1D has nothing like it (a line has \
+no other axis). Treating each gas as a relaxing spring (Debye: stiffness k (1 + ½ iωτ_x/(1 + iωτ_x)) in 2D), the \
 oscillator's energy decays in 1/(ω Im k/Re k) ≈ 2/(ω²τ_x) for ωτ_x ≪ 1: a heavier piston is slower, \
 dissipates less per swing, but only in proportion, so τ grows about linearly with M, not as M² as in 1D. The \
 thin lines are this prediction with τ_x = η/p from the Chapman–Enskog viscosity of hard disks (no fitted \

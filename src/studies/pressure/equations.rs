@@ -64,7 +64,7 @@ const SPHERES: &[Equation] = &[
     },
     Equation {
         name: "Carnahan-Starling-Kolafa",
-        // Within 1e-4 of Hansen-Goos up to 0.4, 6e-4 above it at 0.49.
+        // Within 1e-4 of Hansen-Goos up to 0.4, 6e-4 below it at 0.49.
         z: carnahan_starling_kolafa::z,
         holds_below: 0.494,
         defined_below: f64::INFINITY,
