@@ -199,4 +199,22 @@ mod tests {
         assert!((conductivity_dilute(2, 1.0, 1.0, 1.0) - 4.0 * eta0).abs() < 1e-12);
         assert!((compressibility(2, 0.3) - crate::theory::henderson::z(0.3)).abs() < 1e-12);
     }
+
+    /// docs/heat.md: disks between two walls a distance L apart (height h,
+    /// both walls thermal) relax near T_w in (1/3) L sqrt(2 pi m / kT_w) / Z.
+    #[test]
+    fn the_linear_time_between_two_walls() {
+        let (length, height, density, phi, mass, kt) = (40.0, 10.0, 0.2, 0.157, 2.0, 1.5);
+        let particles = density * length * height;
+        let z = compressibility(2, phi);
+        let rate = exchange_rate(2, particles, 2.0 * height, z * density, mass);
+        let linear = WellMixed {
+            rate,
+            wall: kt,
+            start: 2.0 * kt,
+        }
+        .linear_time();
+        let by_hand = length * (2.0 * PI * mass / kt).sqrt() / (3.0 * z);
+        assert!((linear / by_hand - 1.0).abs() < 1e-12, "{linear} {by_hand}");
+    }
 }

@@ -111,6 +111,18 @@ mod tests {
         let t = step_mixing_time(2.0);
         assert!((step_excess(t, 2.0) - 0.5 / E).abs() < 1e-12);
         assert!(t > 0.0 && t < 2.0);
+        // In units of tau the 1/e time is 0.790 (docs/mixing.md).
+        assert!((step_mixing_time(1.0) - 0.7902).abs() < 1e-4);
+    }
+
+    #[test]
+    fn enskog_differs_from_the_dilute_value_by_g_even_when_dilute() {
+        // Henderson's contact value at eta = 0.05 is 1.0838: 8 % (docs/mixing.md).
+        let ratio = disk_diffusion_dilute(1.0, 1.0, 1.0, 1.0)
+            / disk_diffusion_enskog(1.0, 1.0, 1.0, 1.0, 0.05);
+        let by_hand = ((1.0 + 0.05f64.powi(2) / 8.0) / 0.95f64.powi(2) - 1.0) / 0.1;
+        assert!((ratio - by_hand).abs() < 1e-12);
+        assert!((ratio - 1.0838).abs() < 1e-4);
     }
 
     #[test]

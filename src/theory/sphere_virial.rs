@@ -36,6 +36,13 @@ mod tests {
     use super::*;
 
     #[test]
+    fn carnahan_starling_is_a_quarter_percent_below_at_three_tenths() {
+        // docs/pressure.md: 0.258 % below the series with its tail.
+        let rel = super::super::carnahan_starling::z(0.3) / resummed(0.3) - 1.0;
+        assert!((rel + 2.58e-3).abs() < 0.01e-3, "{rel}");
+    }
+
+    #[test]
     fn exact_coefficients() {
         // B3 / B2^2 = 5/8 and B4 / v^3 = 18.3647684 with v the sphere's
         // volume (B2 = 4 v): reduced 18.3647684 / 64 (Clisby-McCoy Table 1).
