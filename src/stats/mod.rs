@@ -1,6 +1,11 @@
 //! Estimators and error bars shared by studies, and numbers as text.
 
+pub mod diffusion;
 pub mod ensemble;
 pub mod format;
+pub mod late;
+pub mod line;
+pub mod oscillation;
+pub mod passage;
 pub mod replicas;
 pub mod summary;

@@ -4,9 +4,9 @@
 use crate::study_common::{ensemble, stats};
 use bonkers::model::run_output::RunOutput;
 use bonkers::model::run_spec::RunSpec;
+use bonkers::stats::line::line;
 use bonkers::stats::summary::Stats;
 use bonkers::studies::expansion::{Draw, Gas};
-use bonkers::studies::mixing::line;
 use bonkers::theory::expansion::FreeExpansion;
 
 const MAXWELL: &str = r#"{ kind = "maxwell", temperature = 1.0 }"#;

@@ -46,12 +46,18 @@ fn module_of(src: &Path, file: &Path) -> Option<String> {
 
 /// Modules named as `crate::<name>` in code (line comments dropped).
 fn imports(text: &str) -> Vec<(usize, String)> {
+    names_after(text, "crate::")
+}
+
+/// Each name that follows `prefix` in code (line comments dropped), with
+/// its line number.
+fn names_after(text: &str, prefix: &str) -> Vec<(usize, String)> {
     let mut found = Vec::new();
     for (n, line) in text.lines().enumerate() {
         let code = line.split("//").next().unwrap_or("");
         let mut rest = code;
-        while let Some(i) = rest.find("crate::") {
-            let after = &rest[i + "crate::".len()..];
+        while let Some(i) = rest.find(prefix) {
+            let after = &rest[i + prefix.len()..];
             let name: String = after
                 .chars()
                 .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
@@ -63,6 +69,75 @@ fn imports(text: &str) -> Vec<(usize, String)> {
         }
     }
     found
+}
+
+/// Study folders named by a file of the folder `own`: through the crate
+/// root, or through `super` up to `src/studies/` (one step from a folder's
+/// `mod.rs`, two from its other files).
+fn other_studies(text: &str, own: &str, is_mod: bool, folders: &[String]) -> Vec<(usize, String)> {
+    let up = if is_mod { "super::" } else { "super::super::" };
+    let mut named = names_after(text, "crate::studies::");
+    named.extend(
+        names_after(text, up)
+            .into_iter()
+            .filter(|(_, n)| n != "super"),
+    );
+    named
+        .into_iter()
+        .filter(|(_, name)| name != own && folders.contains(name))
+        .collect()
+}
+
+#[test]
+fn no_study_folder_reaches_into_another() {
+    let studies = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/studies");
+    let mut folders: Vec<String> = std::fs::read_dir(&studies)
+        .expect("src/studies is readable")
+        .map(|e| e.expect("directory entry").path())
+        .filter(|p| p.is_dir())
+        .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+        .collect();
+    folders.sort();
+    assert!(folders.len() > 5, "only {folders:?} under src/studies");
+    let mut wrong = Vec::new();
+    for own in &folders {
+        let mut files = Vec::new();
+        rust_files(&studies.join(own), &mut files);
+        for file in &files {
+            let text = std::fs::read_to_string(file).expect("source is readable");
+            let is_mod = file.file_name().is_some_and(|n| n == "mod.rs");
+            for (line, other) in other_studies(&text, own, is_mod, &folders) {
+                wrong.push(format!(
+                    "{}:{line}: `{own}` reaches into `{other}`",
+                    file.display()
+                ));
+            }
+        }
+    }
+    assert!(
+        wrong.is_empty(),
+        "study folders that import another (shared code belongs in stats):\n{}",
+        wrong.join("\n")
+    );
+}
+
+#[test]
+fn the_folder_rule_sees_every_way_across() {
+    let folders = ["heat".to_string(), "mixing".to_string()];
+    let text = "use crate::studies::mixing::line;\nuse super::super::mixing::X;\nuse super::heat;";
+    let from_file = other_studies(text, "heat", false, &folders);
+    assert_eq!(
+        from_file,
+        vec![(1, "mixing".to_string()), (2, "mixing".to_string())]
+    );
+    let from_mod = other_studies(
+        "use super::mixing; use super::Study;",
+        "heat",
+        true,
+        &folders,
+    );
+    assert_eq!(from_mod, vec![(1, "mixing".to_string())]);
+    assert!(other_studies("use crate::studies::heat::X;", "heat", false, &folders).is_empty());
 }
 
 #[test]

@@ -8,8 +8,8 @@ use bonkers::engine::{Rods, Stop};
 use bonkers::model::run_output::RunOutput;
 use bonkers::model::run_spec::RunSpec;
 use bonkers::runner::plan::plan;
+use bonkers::stats::late::late_mean;
 use bonkers::stats::summary::Stats;
-use bonkers::studies::mixing::late_mean;
 use bonkers::theory::mixing::{disk_diffusion_enskog, equilibrium_concentration};
 use rand::SeedableRng;
 

@@ -83,7 +83,7 @@ impl Study for Accuracy {
             // Recorded for the piston scenes only: elsewhere it is all NaN.
             out.series.retain(|s| s.observable != "piston_position");
         } else if let Some(x) = out.series("piston_position") {
-            let omega = super::piston::oscillation(&x.t, &x.value, PERIODS, BAND)
+            let omega = crate::stats::oscillation::oscillation(&x.t, &x.value, PERIODS, BAND)
                 .map_or(f64::NAN, |m| m.omega);
             out.scalars.push(("piston_frequency".into(), omega));
         }

@@ -87,7 +87,7 @@ impl Study for Expansion {
             .series
             .iter()
             .filter(|s| s.observable.starts_with("msd.") && s.observable.ends_with(".y"))
-            .map(|s| crate::studies::mixing::diffusion(&s.t, &s.value).0)
+            .map(|s| crate::stats::diffusion::diffusion(&s.t, &s.value).0)
             .next();
         out.scalars.extend(
             [

@@ -11,8 +11,8 @@ use super::profiles;
 use crate::model::report::{Figure, ReportSection};
 use crate::stats::ensemble::Runs;
 use crate::stats::format::{count, num, pm};
+use crate::stats::line::line;
 use crate::stats::summary::Stats;
-use crate::studies::mixing::line;
 use crate::theory::expansion_rods::Collisionless;
 use std::fmt::Write;
 

@@ -8,7 +8,7 @@ use super::section::{Runs, cost, stat, with_z};
 use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::report::Figure;
 use crate::stats::format::{count, num, pm};
-use crate::studies::mixing::line;
+use crate::stats::line::line;
 use std::fmt::Write;
 
 /// Weighted least squares of y on x: (slope, its standard error), weights

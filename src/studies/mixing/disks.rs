@@ -7,40 +7,19 @@
 //! along y with wavelengths of the box length carry the disks collectively
 //! and inflate the displacement along y several-fold in a dense strip.)
 
-use super::measure::{first_passage, late_mean, line};
 use crate::model::descriptor::Descriptor;
 use crate::model::run_output::RunOutput;
 use crate::scene::Built;
 use crate::scene::velocities::maxwell_temperature;
+use crate::stats::diffusion::diffusion;
+use crate::stats::late::late_mean;
+use crate::stats::passage::first_passage;
 use crate::theory::mixing::disk_diffusion_enskog;
-
-/// The fit of the mean-squared displacement starts at this fraction of the
-/// longest lag measured.
-pub const FIT_FROM: f64 = 0.25;
 
 /// kT of a Maxwellian start (the default when the scene gives none); None
 /// for other velocity rules.
 pub fn temperature(d: &Descriptor) -> Option<f64> {
     maxwell_temperature(crate::scene::resolve(&d.scene).ok()?.velocities.as_ref())
-}
-
-/// Self-diffusion coefficient from a mean-squared displacement along one
-/// axis against lag: the slope of the straight line through the lags from
-/// `FIT_FROM` of the longest on, over 2 (MSD = 2 D (t - t_memory) once the
-/// velocity has forgotten its start). NaN without enough finite points.
-pub fn diffusion(lag: &[f64], msd: &[f64]) -> (f64, f64) {
-    let longest = lag.iter().copied().fold(0.0, f64::max);
-    let (x, y): (Vec<f64>, Vec<f64>) = lag
-        .iter()
-        .zip(msd)
-        .filter(|(t, m)| **t >= FIT_FROM * longest && m.is_finite())
-        .map(|(t, m)| (*t, *m))
-        .unzip();
-    if x.len() < 3 {
-        return (f64::NAN, f64::NAN);
-    }
-    let (slope, _, _) = line(&x, &y, None);
-    (slope / 2.0, x[0])
 }
 
 pub fn per_run(

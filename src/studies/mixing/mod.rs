@@ -8,7 +8,6 @@
 
 mod disks;
 mod error;
-mod measure;
 mod rods;
 mod section;
 mod section_disks;
@@ -22,8 +21,6 @@ use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
 use crate::model::scene::SceneSpec;
 use crate::stats::ensemble::Runs;
-pub use disks::diffusion;
-pub use measure::{first_passage, late_mean, line};
 
 /// The series every run records for it.
 pub const SERIES: &[&str] = &[

@@ -2,10 +2,11 @@
 //! particle (the scene's piston rod, the gas at rest). How long until the
 //! energy is spread as equilibrium spreads it, and does it get there?
 
-use super::measure::{first_passage, late_mean};
 use crate::model::descriptor::Descriptor;
 use crate::model::run_output::RunOutput;
 use crate::scene::Built;
+use crate::stats::late::late_mean;
+use crate::stats::passage::first_passage;
 use crate::theory::mixing::equilibrium_concentration;
 
 /// The largest over the smallest mass the descriptor lets the gas (every

@@ -2,11 +2,11 @@
 //! points flagged), its scaling with the mass spread and with N, the
 //! ensemble mean of the energy concentration against time.
 
-use super::measure::line;
 use super::section::Point;
 use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::report::Figure;
 use crate::stats::format::{count, num, pm};
+use crate::stats::line::line;
 use crate::studies::curves::mean_with_band;
 use crate::theory::mixing::equilibrium_concentration;
 use std::fmt::Write;

@@ -20,11 +20,11 @@ use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::stats::ensemble::Runs;
+/// The piston's frequency estimator, for studies that measure one too.
+use crate::stats::oscillation::{Oscillation, oscillation};
 use crate::theory::piston::{Law, PistonSystem};
 use crate::theory::piston_equilibrium::{degrees_of_freedom, oscillator_share};
-/// The piston's frequency estimator, for studies that measure one too.
-pub use estimators::oscillation;
-use estimators::{Oscillation, late_mean, late_share, relaxation_time};
+use estimators::{late_mean, late_share, relaxation_time};
 use rand::SeedableRng;
 use state::{Geometry, Samples};
 use std::f64::consts::TAU;
