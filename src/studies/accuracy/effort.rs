@@ -10,6 +10,7 @@ use super::groups::Group;
 use super::section::{headline, scatter};
 use crate::model::descriptor::Integrator;
 use crate::stats::format::num;
+use crate::stats::line::log_slope;
 use std::fmt::Write;
 
 /// Relative errors the planning table is asked for.
@@ -68,7 +69,7 @@ fn one(scene: &str, runs: &[&Group]) -> String {
         );
     }
     let points: Vec<(f64, f64)> = runs.iter().map(|g| (g.cpu, scatter(g))).collect();
-    if let Some(p) = exponent(&points) {
+    if let Some(p) = log_slope(&points, 2) {
         let verdict = if (p + 0.5).abs() < 0.15 {
             "as cost^(−1/2): these runs outlast the result's correlation time, so length and replicas buy \
              error alike"
@@ -108,23 +109,6 @@ fn one(scene: &str, runs: &[&Group]) -> String {
         );
     }
     md
-}
-
-/// Least-squares slope of ln σ against ln c.
-pub fn exponent(points: &[(f64, f64)]) -> Option<f64> {
-    if points.len() < 2 {
-        return None;
-    }
-    let n = points.len() as f64;
-    let (mx, my) = points.iter().fold((0.0, 0.0), |(a, b), (x, y)| {
-        (a + x.ln() / n, b + y.ln() / n)
-    });
-    let sxy: f64 = points
-        .iter()
-        .map(|(x, y)| (x.ln() - mx) * (y.ln() - my))
-        .sum();
-    let sxx: f64 = points.iter().map(|(x, _)| (x.ln() - mx).powi(2)).sum();
-    (sxx > 0.0).then(|| sxy / sxx)
 }
 
 const INTRO: &str = "\n### Error against effort: the statistics\n\n\

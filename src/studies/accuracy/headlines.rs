@@ -6,11 +6,11 @@
 //! groups of k replicas; both fitted against cost; the study's error model
 //! (`Study::error_model`) beside what was measured; and a planning table.
 
-use super::effort::exponent;
 use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::stats::format::{num, pm};
+use crate::stats::line::{line, log_slope};
 use crate::stats::summary::Stats;
 use crate::studies::error_model::{ErrorModel, scatter_uncertainty, scatter_uncertainty_of};
 use std::fmt::Write;
@@ -254,7 +254,7 @@ fn along_length(lengths: &[&Length], model: f64) -> String {
             num(hi.0)
         );
     }
-    let Some(p) = exponent(&pts) else {
+    let Some(p) = log_slope(&pts, 2) else {
         return String::new();
     };
     let verdict = if (p + 0.5).abs() < 0.15 {
@@ -322,20 +322,10 @@ fn weighted_slope(pts: &[(f64, f64, f64)]) -> Option<(f64, f64)> {
         return None;
     }
     let w: Vec<f64> = pts.iter().map(|p| 1.0 / (p.2 * p.2)).collect();
-    let sw: f64 = w.iter().sum();
-    let mx = pts.iter().zip(&w).map(|(p, w)| w * p.0.ln()).sum::<f64>() / sw;
-    let my = pts.iter().zip(&w).map(|(p, w)| w * p.1.ln()).sum::<f64>() / sw;
-    let sxx: f64 = pts
-        .iter()
-        .zip(&w)
-        .map(|(p, w)| w * (p.0.ln() - mx).powi(2))
-        .sum();
-    let sxy: f64 = pts
-        .iter()
-        .zip(&w)
-        .map(|(p, w)| w * (p.0.ln() - mx) * (p.1.ln() - my))
-        .sum();
-    (sxx > 0.0).then(|| (sxy / sxx, (1.0 / sxx).sqrt()))
+    let x: Vec<f64> = pts.iter().map(|p| p.0.ln()).collect();
+    let y: Vec<f64> = pts.iter().map(|p| p.1.ln()).collect();
+    let (slope, se, _) = line(&x, &y, Some(&w));
+    (!se.is_nan()).then_some((slope, se))
 }
 
 /// For X % error, the replicas and CPU seconds: measured σ₁ and the model's.

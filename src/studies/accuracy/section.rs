@@ -9,6 +9,7 @@ use crate::model::report::{Figure, ReportSection};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::stats::format::{num, pm};
+use crate::stats::line::log_slope;
 use crate::stats::summary::Stats;
 use std::fmt::Write;
 
@@ -223,17 +224,8 @@ fn bias(scene: &str, reference: &Group, pts: &[&Group]) -> String {
 
 /// Least-squares slope of log error against log dt, over at least 3 points.
 fn slope(pts: &[&(f64, f64, f64)]) -> Option<f64> {
-    if pts.len() < 3 {
-        return None;
-    }
-    let xy: Vec<(f64, f64)> = pts.iter().map(|(dt, e, _)| (dt.ln(), e.ln())).collect();
-    let n = xy.len() as f64;
-    let (mx, my) = xy
-        .iter()
-        .fold((0.0, 0.0), |(a, b), (x, y)| (a + x / n, b + y / n));
-    let sxy: f64 = xy.iter().map(|(x, y)| (x - mx) * (y - my)).sum();
-    let sxx: f64 = xy.iter().map(|(x, _)| (x - mx).powi(2)).sum();
-    (sxx > 0.0).then(|| sxy / sxx)
+    let xy: Vec<(f64, f64)> = pts.iter().map(|(dt, e, _)| (*dt, *e)).collect();
+    log_slope(&xy, 3)
 }
 
 /// What error `seconds` of CPU buy each way: the exact engine's statistical

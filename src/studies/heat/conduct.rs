@@ -5,6 +5,7 @@
 
 use super::gas::Gas;
 use crate::model::run_output::Histogram;
+use crate::stats::line::Sums;
 
 /// A run's profile across x: per slab its centre, temperature, density and
 /// the number of particle-samples in it.
@@ -49,22 +50,18 @@ pub struct Line {
 impl Line {
     pub fn fit(p: &Profile, length: f64, width: f64) -> Line {
         let mid = length / 2.0;
-        let (mut sw, mut sx, mut sy, mut sxx, mut sxy) = (0.0, 0.0, 0.0, 0.0, 0.0);
+        let mut s = Sums::default();
         for i in 0..p.x.len() {
             let x = p.x[i] - mid;
             let (y, w) = (p.temperature[i], p.weight[i]);
             if x.abs() > width * length / 2.0 || !y.is_finite() || w <= 0.0 {
                 continue;
             }
-            sw += w;
-            sx += w * x;
-            sy += w * y;
-            sxx += w * x * x;
-            sxy += w * x * y;
+            s.add(x, y, w);
         }
-        let slope = (sw * sxy - sx * sy) / (sw * sxx - sx * sx);
+        let slope = s.slope();
         Line {
-            centre: (sy - slope * sx) / sw,
+            centre: (s.y - slope * s.x) / s.w,
             slope,
             half_length: mid,
         }

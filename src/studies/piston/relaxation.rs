@@ -6,6 +6,7 @@ use crate::model::chart::colour;
 use crate::model::chart::{ChartSpec, Layer};
 use crate::model::report::Figure;
 use crate::stats::format::{count, num, pm};
+use crate::stats::line::{Sums, chi_square};
 use crate::studies::piston::points::{Point, groups};
 use std::fmt::Write;
 
@@ -16,28 +17,15 @@ fn fit_line(points: &[(f64, f64, f64)]) -> Option<(f64, f64, f64, f64)> {
     if points.len() < 3 {
         return None;
     }
-    let (mut s, mut sx, mut sy, mut sxx, mut sxy) = (0.0, 0.0, 0.0, 0.0, 0.0);
-    for &(x, y, e) in points {
-        let w = 1.0 / (e * e);
-        s += w;
-        sx += w * x;
-        sy += w * y;
-        sxx += w * x * x;
-        sxy += w * x * y;
-    }
-    let det = s * sxx - sx * sx;
+    let sums = Sums::of_errors(points.iter().copied());
+    let det = sums.det();
     if det.is_nan() || det <= 0.0 {
         return None;
     }
-    let slope = (s * sxy - sx * sy) / det;
-    let intercept = (sxx * sy - sx * sxy) / det;
-    let chi2: f64 = points
-        .iter()
-        .map(|&(x, y, e)| ((y - intercept - slope * x) / e).powi(2))
-        .sum();
-    let dof = (points.len() - 2) as f64;
-    let se = (s / det).sqrt() * (chi2 / dof).max(1.0).sqrt();
-    Some((slope, se, intercept, chi2 / dof))
+    let (slope, intercept) = (sums.slope(), sums.intercept());
+    let chi2 = chi_square(points, slope, intercept) / (points.len() - 2) as f64;
+    let se = sums.slope_error() * chi2.max(1.0).sqrt();
+    Some((slope, se, intercept, chi2))
 }
 
 /// omega tau_x below which the exchange theory's relaxation time is compared.

@@ -17,6 +17,7 @@
 //! which and gives the χ² it had.
 
 use super::points::Point;
+use crate::stats::line::Sums;
 use statrs::distribution::{ChiSquared, ContinuousCDF};
 
 /// One group's fit.
@@ -85,18 +86,9 @@ fn fit(g: &[&Point]) -> Fit {
         .iter()
         .map(|p| (p.particles, p.z.mean, p.error().0))
         .collect();
-    let (mut s, mut sx, mut sy, mut sxx, mut sxy) = (0.0, 0.0, 0.0, 0.0, 0.0);
-    for &(n, z, e) in &data {
-        let (x, w) = (1.0 / n as f64, 1.0 / (e * e));
-        s += w;
-        sx += w * x;
-        sy += w * z;
-        sxx += w * x * x;
-        sxy += w * x * z;
-    }
-    let det = s * sxx - sx * sx;
-    let z_inf = (sxx * sy - sx * sxy) / det;
-    let slope = (s * sxy - sx * sy) / det;
+    let s = Sums::of_errors(data.iter().map(|&(n, z, e)| (1.0 / n as f64, z, e)));
+    let (z_inf, slope) = (s.intercept(), s.slope());
+    // Not `chi_square`: slope / N rounds unlike slope * (1 / N).
     let chi2 = data
         .iter()
         .map(|&(n, z, e)| ((z - z_inf - slope / n as f64) / e).powi(2))
@@ -105,9 +97,9 @@ fn fit(g: &[&Point]) -> Fit {
         dimension: g[0].dimension,
         eta: g[0].eta,
         z_inf,
-        z_inf_err: (sxx / det).sqrt(),
+        z_inf_err: s.intercept_error(),
         slope,
-        slope_err: (s / det).sqrt(),
+        slope_err: s.slope_error(),
         chi2,
         dof: data.len() - 2,
         data,
