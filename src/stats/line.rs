@@ -129,8 +129,9 @@ mod tests {
     }
 
     /// Points 0, 1, 2 with errors 1, 1, 2 on y = 3 + 0.5 x: S = 2.25,
-    /// Sx = 2, Sxx = 2, det = 0.5, so the slope's error is sqrt(S / det) = sqrt(4.5)
-    /// and the intercept's sqrt(Sxx / det) = 2; exact points give χ² = 0.
+    /// Sx = 1.5, Sxx = 2, det = 2.25, so the slope's error is
+    /// sqrt(S / det) = 1 and the intercept's sqrt(Sxx / det) = sqrt(8) / 3;
+    /// exact points give χ² = 0.
     #[test]
     fn normal_equations_of_a_hand_checked_case() {
         let pts: Vec<(f64, f64, f64)> = [(0.0, 1.0), (1.0, 1.0), (2.0, 2.0)]
@@ -138,10 +139,10 @@ mod tests {
             .map(|&(x, e)| (x, 3.0 + 0.5 * x, e))
             .collect();
         let s = Sums::of_errors(pts.iter().copied());
-        assert_eq!((s.w, s.x, s.xx, s.det()), (2.25, 2.0, 2.0, 0.5));
+        assert_eq!((s.w, s.x, s.xx, s.det()), (2.25, 1.5, 2.0, 2.25));
         assert!((s.slope() - 0.5).abs() < 1e-12 && (s.intercept() - 3.0).abs() < 1e-12);
-        assert!((s.slope_error() - 4.5f64.sqrt()).abs() < 1e-12);
-        assert!((s.intercept_error() - 2.0).abs() < 1e-12);
+        assert!((s.slope_error() - 1.0).abs() < 1e-12);
+        assert!((s.intercept_error() - 8f64.sqrt() / 3.0).abs() < 1e-12);
         assert!(chi_square(&pts, s.slope(), s.intercept()) < 1e-24);
         // A line 2 below: residuals of 2, 2 and 2 over errors of 1, 1 and 2.
         assert_eq!(chi_square(&pts, 0.5, 1.0), 4.0 + 4.0 + 1.0);

@@ -41,4 +41,14 @@ mod tests {
         assert!(first_passage(&t, &[1.0; 4], 0.2).is_nan());
         assert!(first_passage(&t, &y, 1.5).is_nan());
     }
+
+    #[test]
+    fn an_excess_over_one_half_is_timed() {
+        let t = [0.0, 1.0, 2.0, 3.0];
+        let f = [1.0, 0.8, 0.6, 0.55];
+        let level = 0.5 / E;
+        let expect = 1.0 + (0.3 - level) / 0.2;
+        assert!((first_passage(&t, &f, 0.5) - expect).abs() < 1e-12);
+        assert!(first_passage(&t, &[1.0, 0.9, 0.8, 0.75], 0.5).is_nan());
+    }
 }

@@ -3,11 +3,11 @@
 //! results as ensemble statistics and the ensemble-mean left fraction.
 
 use super::measure::{Draw, Gas, draw};
-use super::relaxation_time;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::stats::ensemble::Runs;
 use crate::stats::format::num;
+use crate::stats::passage::first_passage;
 use crate::stats::summary::Stats;
 use crate::theory::expansion_rods::Collisionless;
 use std::collections::BTreeMap;
@@ -84,7 +84,7 @@ impl Group<'_> {
     /// The first passage of the ensemble-mean curve.
     pub fn tau_of_mean(&self) -> f64 {
         let curve: Vec<f64> = self.mean.iter().map(|s| s.mean).collect();
-        relaxation_time(&self.t, &curve)
+        first_passage(&self.t, &curve, 0.5)
     }
 
     pub fn dimension(&self) -> usize {

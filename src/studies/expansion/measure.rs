@@ -5,37 +5,13 @@
 use crate::model::descriptor::Descriptor;
 use crate::model::scene::Velocities;
 use crate::scene::Built;
+use crate::stats::late::LATE;
 use crate::theory::expansion::{Diffusive, FreeExpansion, Mixture, Speeds, compressibility};
 use crate::theory::expansion_rods::{Collisionless, Rods};
 use crate::theory::self_diffusion;
 use rand::SeedableRng;
 
-/// Part of the run, at its end, over which the settled split is averaged.
-pub const LATE: f64 = 0.5;
-
-/// First time the excess f - 1/2 falls to 1/e of its value at the first
-/// sample, interpolated linearly between the samples around the crossing
-/// (NaN if it never does, or if nothing started in excess).
-pub fn relaxation_time(t: &[f64], f: &[f64]) -> f64 {
-    let Some(&first) = f.first() else {
-        return f64::NAN;
-    };
-    let start = first - 0.5;
-    if start.is_nan() || start <= 0.0 {
-        return f64::NAN;
-    }
-    let level = start / std::f64::consts::E;
-    for i in 1..f.len().min(t.len()) {
-        let (a, b) = (f[i - 1] - 0.5, f[i] - 0.5);
-        if b <= level {
-            let w = (a - level) / (a - b);
-            return t[i - 1] + w * (t[i] - t[i - 1]);
-        }
-    }
-    f64::NAN
-}
-
-/// Mean of f over the last `LATE` of the run, and its mean square
+/// Mean of f over the last `LATE` of the run (see `stats::late`), and its mean square
 /// deviation from 1/2 (the mean by symmetry: a run's own mean would hide
 /// its slowest fluctuations).
 pub fn late(t: &[f64], f: &[f64]) -> (f64, f64) {
@@ -255,16 +231,6 @@ pub fn draw(d: &Descriptor) -> Option<Draw> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn crossing_is_interpolated() {
-        let t = [0.0, 1.0, 2.0, 3.0];
-        let f = [1.0, 0.8, 0.6, 0.55];
-        let level = 0.5 / std::f64::consts::E;
-        let expect = 1.0 + (0.3 - level) / 0.2;
-        assert!((relaxation_time(&t, &f) - expect).abs() < 1e-12);
-        assert!(relaxation_time(&t, &[1.0, 0.9, 0.8, 0.75]).is_nan());
-    }
 
     #[test]
     fn late_half_statistics() {

@@ -16,7 +16,8 @@ use crate::model::need::Need;
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
 use crate::stats::ensemble::Runs;
-pub use measure::{Draw, Gas, draw, late, relaxation_time, starts_left};
+use crate::stats::passage::first_passage;
+pub use measure::{Draw, Gas, draw, late, starts_left};
 
 /// The series every run records for it.
 pub const SERIES: &[&str] = &["left_fraction"];
@@ -69,7 +70,8 @@ impl Study for Expansion {
         // Only an expansion relaxes: a gas started everywhere has no time.
         let left = starts_left(run.descriptor);
         let tau = if left {
-            relaxation_time(t, f)
+            // The excess f - 1/2 relaxes to 1/e.
+            first_passage(t, f, 0.5)
         } else {
             f64::NAN
         };
