@@ -3,6 +3,7 @@
 pub mod diffusion;
 pub mod ensemble;
 pub mod format;
+pub mod groups;
 pub mod late;
 pub mod line;
 pub mod oscillation;

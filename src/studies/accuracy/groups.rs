@@ -5,6 +5,7 @@
 use crate::model::descriptor::Integrator;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
+use crate::stats::groups::first_seen;
 use crate::stats::summary::Stats;
 
 /// The runs of one scene with one integrator and step.
@@ -48,7 +49,7 @@ pub fn scene_of(spec: &RunSpec) -> String {
 
 /// Groups in the order their first run comes in the plan.
 pub fn groups(runs: &[&(RunSpec, RunOutput)]) -> Vec<Group> {
-    let mut keys: Vec<(String, Integrator, u64, u64)> = Vec::new();
+    // Bits, so that NaN (no fixed step) is one key.
     let key = |s: &RunSpec| {
         let dt = s.descriptor.run.dt.unwrap_or(f64::NAN);
         let duration = s.descriptor.run.duration.unwrap_or(f64::NAN);
@@ -59,26 +60,21 @@ pub fn groups(runs: &[&(RunSpec, RunOutput)]) -> Vec<Group> {
             duration.to_bits(),
         )
     };
-    for (s, _) in runs {
-        let k = key(s);
-        if !keys.contains(&k) {
-            keys.push(k);
-        }
-    }
-    keys.into_iter()
-        .map(|k| {
-            let members: Vec<&RunOutput> = runs
-                .iter()
-                .filter(|(s, _)| key(s) == k)
-                .map(|(_, o)| o)
-                .collect();
-            let mut g = group(k.0.clone(), k.1, f64::from_bits(k.2), &members);
-            g.duration = f64::from_bits(k.3);
-            g.piston = runs
-                .iter()
-                .find(|(s, _)| key(s) == k)
-                .and_then(|(s, _)| crate::scene::resolve(&s.descriptor.scene).ok())
-                .is_some_and(|scene| scene.piston.is_some());
+    first_seen(runs.iter().copied(), |a, b| key(&a.0) == key(&b.0))
+        .into_iter()
+        .map(|rs| {
+            let (first, _) = rs[0];
+            let members: Vec<&RunOutput> = rs.iter().map(|(_, o)| o).collect();
+            let dt = first.descriptor.run.dt.unwrap_or(f64::NAN);
+            let mut g = group(
+                scene_of(first),
+                first.descriptor.run.integrator,
+                dt,
+                &members,
+            );
+            g.duration = first.descriptor.run.duration.unwrap_or(f64::NAN);
+            g.piston = crate::scene::resolve(&first.descriptor.scene)
+                .is_ok_and(|scene| scene.piston.is_some());
             g
         })
         .collect()

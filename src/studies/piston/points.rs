@@ -2,10 +2,11 @@
 //! statistics of every result the report shows, its cost), and the points
 //! grouped by dimension and by the parameters other than the piston's mass.
 
+use super::estimators::decay_bound;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
+use crate::stats::groups::first_seen;
 use crate::stats::summary::Stats;
-use crate::studies::piston::estimators::decay_bound;
 use std::collections::BTreeMap;
 
 const MASS_KEY: &str = "scene.piston.mass";
@@ -151,12 +152,8 @@ pub fn by_dimension(points: &[Point]) -> Vec<(usize, Vec<&Point>)> {
 
 /// Groups of points (same parameters but the mass), in first-seen order.
 pub fn groups<'a>(points: &[&'a Point]) -> Vec<(String, Vec<&'a Point>)> {
-    let mut out: Vec<(String, Vec<&Point>)> = Vec::new();
-    for &p in points {
-        match out.iter_mut().find(|g| g.0 == p.group) {
-            Some(g) => g.1.push(p),
-            None => out.push((p.group.clone(), vec![p])),
-        }
-    }
-    out
+    first_seen(points.iter().copied(), |a, b| a.group == b.group)
+        .into_iter()
+        .map(|g| (g[0].group.clone(), g))
+        .collect()
 }

@@ -17,6 +17,7 @@
 //! which and gives the χ² it had.
 
 use super::points::Point;
+use crate::stats::groups::first_seen;
 use crate::stats::line::Sums;
 use statrs::distribution::{ChiSquared, ContinuousCDF};
 
@@ -49,35 +50,28 @@ fn rejected(chi2: f64, dof: usize) -> bool {
 const SAME_ETA: f64 = 1e-7;
 
 pub fn fits(points: &[Point]) -> Vec<Fit> {
-    let mut groups: Vec<Vec<&Point>> = Vec::new();
-    for p in points.iter().filter(|p| !p.walls && p.z.n >= 2) {
-        match groups
-            .iter_mut()
-            .find(|g| g[0].dimension == p.dimension && (g[0].eta - p.eta).abs() < SAME_ETA)
-        {
-            Some(g) => g.push(p),
-            None => groups.push(vec![p]),
+    let fitted = points.iter().filter(|p| !p.walls && p.z.n >= 2);
+    first_seen(fitted, |a, b| {
+        a.dimension == b.dimension && (a.eta - b.eta).abs() < SAME_ETA
+    })
+    .into_iter()
+    .filter_map(|mut g| {
+        g.sort_by_key(|p| p.particles);
+        g.dedup_by_key(|p| p.particles);
+        if g.len() < 2 {
+            return None;
         }
-    }
-    groups
-        .into_iter()
-        .filter_map(|mut g| {
-            g.sort_by_key(|p| p.particles);
-            g.dedup_by_key(|p| p.particles);
-            if g.len() < 2 {
-                return None;
-            }
-            let mut left_out = Vec::new();
-            let mut f = fit(&g);
-            while g.len() > 2 && rejected(f.chi2, f.dof) {
-                left_out.push((g[0].particles, f.chi2, f.dof));
-                g.remove(0);
-                f = fit(&g);
-            }
-            f.left_out = left_out;
-            Some(f)
-        })
-        .collect()
+        let mut left_out = Vec::new();
+        let mut f = fit(&g);
+        while g.len() > 2 && rejected(f.chi2, f.dof) {
+            left_out.push((g[0].particles, f.chi2, f.dof));
+            g.remove(0);
+            f = fit(&g);
+        }
+        f.left_out = left_out;
+        Some(f)
+    })
+    .collect()
 }
 
 /// Weighted least squares of Z on x = 1/N.
