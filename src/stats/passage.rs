@@ -29,26 +29,20 @@ pub fn first_passage(t: &[f64], value: &[f64], target: f64) -> f64 {
 mod tests {
     use super::*;
 
+    /// Excesses over 0.2 (0.8 at the start) and over 0.5 (0.5): each
+    /// crosses start / e between the two samples that bracket it.
     #[test]
     fn first_passage_is_interpolated_and_nan_when_never_reached() {
         let t = [0.0, 1.0, 2.0, 3.0];
-        let y = [1.0, 0.8, 0.5, 0.3];
-        // Target 0.2: excess 0.8, level 0.8 / e ~ 0.2943, crossed between
-        // t = 2 (excess 0.3) and 3 (0.1).
-        let level = 0.8 / E;
-        let expect = 2.0 + (0.3 - level) / 0.2;
-        assert!((first_passage(&t, &y, 0.2) - expect).abs() < 1e-12);
+        let cases = [
+            ([1.0, 0.8, 0.5, 0.3], 0.2, 2.0 + (0.3 - 0.8 / E) / 0.2),
+            ([1.0, 0.8, 0.6, 0.55], 0.5, 1.0 + (0.3 - 0.5 / E) / 0.2),
+        ];
+        for (y, target, expect) in cases {
+            assert!((first_passage(&t, &y, target) - expect).abs() < 1e-12);
+        }
         assert!(first_passage(&t, &[1.0; 4], 0.2).is_nan());
-        assert!(first_passage(&t, &y, 1.5).is_nan());
-    }
-
-    #[test]
-    fn an_excess_over_one_half_is_timed() {
-        let t = [0.0, 1.0, 2.0, 3.0];
-        let f = [1.0, 0.8, 0.6, 0.55];
-        let level = 0.5 / E;
-        let expect = 1.0 + (0.3 - level) / 0.2;
-        assert!((first_passage(&t, &f, 0.5) - expect).abs() < 1e-12);
         assert!(first_passage(&t, &[1.0, 0.9, 0.8, 0.75], 0.5).is_nan());
+        assert!(first_passage(&t, &cases[0].0, 1.5).is_nan());
     }
 }

@@ -9,6 +9,7 @@ use crate::common;
 use bonkers::engine::{
     Chain, Dynamics, Observer, Particle, SimBox, Simulation, Stepper, Stop, WallHit,
 };
+use bonkers::stats::line::log_slope;
 use bonkers::stats::summary::Stats;
 
 /// Momentum the walls received.
@@ -33,20 +34,6 @@ fn stepped<const D: usize>(
     dt: f64,
 ) -> Box<dyn Dynamics<D, Impulse>> {
     Box::new(Stepper::new(p, b, Impulse::default(), 1, dt, true).unwrap())
-}
-
-/// Least-squares slope of ln y against ln x.
-fn slope(points: &[(f64, f64)]) -> f64 {
-    let n = points.len() as f64;
-    let (mx, my) = points.iter().fold((0.0, 0.0), |(a, b), (x, y)| {
-        (a + x.ln() / n, b + y.ln() / n)
-    });
-    let sxy: f64 = points
-        .iter()
-        .map(|(x, y)| (x.ln() - mx) * (y.ln() - my))
-        .sum();
-    let sxx: f64 = points.iter().map(|(x, _)| (x.ln() - mx).powi(2)).sum();
-    sxy / sxx
 }
 
 /// Disks on separate lanes moving along x only never meet: an ideal gas
@@ -128,7 +115,7 @@ fn ideal_gas_wall_force_is_exact_for_events_and_first_order_for_steps() {
     }
     // Each error is off its model by the spread of 100 disks' overshoots
     // (~6 %), so the slope over two octaves is known to ~0.06.
-    let order = slope(&errors);
+    let order = log_slope(&errors, 3).expect("errors at three steps or more");
     eprintln!("observed order {order}");
     assert!((order - 1.0).abs() < 0.15, "order {order}");
 }
@@ -186,7 +173,7 @@ fn tonks_wall_pressure_is_approached_at_first_order() {
         );
         errors.push((dt, -e.mean));
     }
-    let order = slope(&errors);
+    let order = log_slope(&errors, 3).expect("errors at three steps or more");
     eprintln!("observed order {order}");
     assert!((order - 1.0).abs() < 0.25, "order {order}");
 }
