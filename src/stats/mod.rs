@@ -2,6 +2,7 @@
 
 pub mod diffusion;
 pub mod ensemble;
+pub mod error_model;
 pub mod format;
 pub mod groups;
 pub mod late;

@@ -6,7 +6,6 @@
 pub mod accuracy;
 pub mod curves;
 pub mod equilibrium;
-pub mod error_model;
 pub mod expansion;
 pub mod heat;
 pub mod mixing;
@@ -23,7 +22,7 @@ use crate::model::scene::SceneSpec;
 use crate::observe::Context;
 use crate::scene::Built;
 use crate::stats::ensemble::Runs;
-pub use error_model::ErrorModel;
+pub use crate::stats::error_model::ErrorModel;
 pub use options::StudyOption;
 
 /// Every study bonkers knows: one line each.
@@ -98,7 +97,7 @@ pub trait Study: Sync {
         None
     }
     /// The error model of its headline result at a descriptor (sweep
-    /// values applied), where it has one (`error_model.rs`).
+    /// values applied), where it has one (`stats::error_model`).
     fn error_model(&self, _d: &Descriptor) -> Option<ErrorModel> {
         None
     }

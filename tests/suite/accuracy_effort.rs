@@ -11,8 +11,8 @@ use bonkers::descriptor::load::parse;
 use bonkers::model::descriptor::Descriptor;
 use bonkers::runner::error_bars::two_digits;
 use bonkers::runner::plan::plan;
+use bonkers::stats::error_model::scatter_uncertainty_of;
 use bonkers::stats::summary::Stats;
-use bonkers::studies::error_model::scatter_uncertainty_of;
 use bonkers::studies::{self, ErrorModel};
 use std::process::Command;
 

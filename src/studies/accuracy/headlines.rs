@@ -9,10 +9,10 @@
 use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
+use crate::stats::error_model::{ErrorModel, scatter_uncertainty, scatter_uncertainty_of};
 use crate::stats::format::{num, pm};
 use crate::stats::line::{line, log_slope};
 use crate::stats::summary::Stats;
-use crate::studies::error_model::{ErrorModel, scatter_uncertainty, scatter_uncertainty_of};
 use std::fmt::Write;
 
 /// The runs of one headline result at one run length.

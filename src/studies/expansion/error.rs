@@ -15,7 +15,7 @@
 //! side there.
 
 use crate::model::descriptor::Descriptor;
-use crate::studies::error_model::{ErrorModel, log_interpolate, within};
+use crate::stats::error_model::{ErrorModel, log_interpolate, within};
 
 /// Particles and k = one run's relative scatter times √N, measured.
 const PARTICLES: [f64; 3] = [25.0, 100.0, 400.0];

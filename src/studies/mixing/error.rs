@@ -13,7 +13,7 @@
 
 use crate::model::descriptor::Descriptor;
 use crate::model::scene::Mass;
-use crate::studies::error_model::{ErrorModel, log_interpolate, within};
+use crate::stats::error_model::{ErrorModel, log_interpolate, within};
 
 /// Rods (the hot one included) and one run's relative scatter, measured.
 const RODS: [f64; 3] = [10.0, 20.0, 40.0];

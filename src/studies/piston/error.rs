@@ -13,7 +13,7 @@
 //! sizes, read between them on log-log axes and held at the grid's edges.
 
 use crate::model::descriptor::Descriptor;
-use crate::studies::error_model::{ErrorModel, log_interpolate, within};
+use crate::stats::error_model::{ErrorModel, log_interpolate, within};
 
 /// Piston masses and rods per side of the calibration grid.
 const MASSES: [f64; 4] = [10.0, 100.0, 1000.0, 10000.0];

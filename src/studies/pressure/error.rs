@@ -32,7 +32,7 @@ use super::{equations, packing};
 use crate::model::descriptor::Descriptor;
 use crate::model::scene::{Boundary, Drawn, Mass};
 use crate::scene::velocities::maxwell_temperature;
-use crate::studies::error_model::ErrorModel;
+use crate::stats::error_model::ErrorModel;
 use std::f64::consts::PI;
 
 /// c measured by studies/accuracy.toml's `headline-pressure-*` cases (seed
