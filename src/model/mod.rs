@@ -4,6 +4,7 @@
 
 pub mod chart;
 pub mod descriptor;
+pub mod dimension;
 pub mod movie;
 pub mod need;
 pub mod problem;

@@ -9,6 +9,7 @@ use crate::descriptor::validate::resolved;
 use crate::descriptor::validate_scene::{count, dimension};
 use crate::engine::boundary::ball_volume;
 use crate::model::descriptor::Descriptor;
+use crate::model::dimension::{ForDimension, in_dimension};
 use crate::model::run_spec::RunSpec;
 use crate::model::scene::{Boundary, Drawn, Mass, PistonSpec, SceneSpec, Velocities};
 use std::f64::consts::PI;
@@ -235,11 +236,16 @@ fn event_rates(scene: &SceneSpec) -> Option<Rates> {
         0.0
     };
     let walls: f64 = (0..d).filter(|&k| walled(k)).map(|k| flux / size[k]).sum();
-    let renewals = match d {
-        2 if moving > 0 => renewal_rate::<2>(scene, moving, (PI * kt / (2.0 * mass)).sqrt()),
-        3 if moving > 0 => renewal_rate::<3>(scene, moving, (8.0 * kt / (PI * mass)).sqrt()),
-        _ => 0.0,
-    };
+    let renewals = in_dimension(
+        d,
+        Renewals {
+            scene,
+            moving,
+            kt,
+            mass,
+        },
+    )
+    .unwrap_or(0.0);
     // NaN: a mean mass or size that is not a number.
     let rates = [gas_rate, piston, walls, renewals];
     (!rates.iter().any(|r| r.is_nan())).then_some(Rates {
@@ -252,23 +258,48 @@ fn event_rates(scene: &SceneSpec) -> Option<Rates> {
     })
 }
 
-/// `moving` particles of mean speed `speed` renewing their neighbourhoods
-/// each time they have moved the engine's shell.
-fn renewal_rate<const D: usize>(scene: &SceneSpec, moving: usize, speed: f64) -> f64 {
-    let Ok(sim_box) = crate::scene::build::sim_box::<D>(scene) else {
-        return 0.0;
-    };
-    let balls: usize = (0..scene.species.len()).map(|i| count(scene, i)).sum();
-    let largest = scene
-        .species
-        .iter()
-        .map(|sp| sp.radius.bounds()[1])
-        .fold(0.0, f64::max);
-    let points = balls + usize::from(scene.piston.is_some());
-    match crate::engine::neighbours::layout(points, balls, largest, &sim_box) {
-        Ok((shell, _)) => moving as f64 * speed / shell,
-        // A box the engine cannot follow renews forever (refused at validate).
-        Err(_) => f64::INFINITY,
+/// Disks or spheres whose `moving` particles renew their neighbourhoods
+/// each time they have moved the engine's shell (rods have no shell).
+struct Renewals<'a> {
+    scene: &'a SceneSpec,
+    moving: usize,
+    kt: f64,
+    mass: f64,
+}
+
+impl ForDimension for Renewals<'_> {
+    type Output = f64;
+    fn run<const D: usize>(self) -> f64 {
+        let Renewals {
+            scene,
+            moving,
+            kt,
+            mass,
+        } = self;
+        if D == 1 || moving == 0 {
+            return 0.0;
+        }
+        // The mean speed in D dimensions.
+        let speed = if D == 2 {
+            (PI * kt / (2.0 * mass)).sqrt()
+        } else {
+            (8.0 * kt / (PI * mass)).sqrt()
+        };
+        let Ok(sim_box) = crate::scene::build::sim_box::<D>(scene) else {
+            return 0.0;
+        };
+        let balls: usize = (0..scene.species.len()).map(|i| count(scene, i)).sum();
+        let largest = scene
+            .species
+            .iter()
+            .map(|sp| sp.radius.bounds()[1])
+            .fold(0.0, f64::max);
+        let points = balls + usize::from(scene.piston.is_some());
+        match crate::engine::neighbours::layout(points, balls, largest, &sim_box) {
+            Ok((shell, _)) => moving as f64 * speed / shell,
+            // A box the engine cannot follow renews forever (refused at validate).
+            Err(_) => f64::INFINITY,
+        }
     }
 }
 

@@ -4,8 +4,10 @@
 
 use super::simulate::start;
 use crate::engine::{Chain, NeighbourList, Neighbourhood, Simulation, Stop};
+use crate::model::dimension::{ForDimension, in_dimension};
 use crate::model::movie::{Film, MovieSpec};
 use crate::model::run_spec::RunSpec;
+use crate::model::scene::SceneSpec;
 use crate::observe::film::Filming;
 use crate::scene;
 use anyhow::{Context, anyhow, bail};
@@ -16,42 +18,45 @@ use anyhow::{Context, anyhow, bail};
 /// the frames taken so far).
 pub fn film(spec: &RunSpec, movie: &MovieSpec, max_events: u64) -> anyhow::Result<Film> {
     let scene = scene::resolve(&spec.descriptor.scene).map_err(|e| anyhow!(e))?;
-    match scene.dimension().map_err(|e| anyhow!(e))? {
-        1 => {
-            let (built, seed) = start::<1>(spec, &scene)?;
-            let camera = camera(&built, spec);
-            shoot::<1, Chain>(&built, camera, seed, movie, max_events)
-        }
-        2 => balls::<2>(spec, &scene, movie, max_events),
-        3 => balls::<3>(spec, &scene, movie, max_events),
-        d => bail!("scene.dimension = {d}; use 1, 2 or 3"),
-    }
+    let d = scene.dimension().map_err(|e| anyhow!(e))?;
+    let filming = Filmed {
+        spec,
+        scene: &scene,
+        movie,
+        max_events,
+    };
+    in_dimension(d, filming).map_err(|e| anyhow!(e))?
 }
 
-fn camera<const D: usize>(built: &scene::build::Built<D>, spec: &RunSpec) -> Filming {
-    let size = built.sim_box.size;
-    Filming::new(
-        D,
-        [size[0], if D > 1 { size[1] } else { 0.0 }],
-        built.species.clone(),
-        spec.run_id,
-    )
-}
-
-/// Disks and spheres, with plane support only when the scene has a piston
-/// wall (as the measured run had).
-fn balls<const D: usize>(
-    spec: &RunSpec,
-    scene: &crate::model::scene::SceneSpec,
-    movie: &MovieSpec,
+/// A movie in the dimension of its scene.
+struct Filmed<'a> {
+    spec: &'a RunSpec,
+    scene: &'a SceneSpec,
+    movie: &'a MovieSpec,
     max_events: u64,
-) -> anyhow::Result<Film> {
-    let (built, seed) = start::<D>(spec, scene)?;
-    let camera = camera(&built, spec);
-    if built.particles.iter().any(|p| p.is_plane()) {
-        shoot::<D, NeighbourList<D, true>>(&built, camera, seed, movie, max_events)
-    } else {
-        shoot::<D, NeighbourList<D>>(&built, camera, seed, movie, max_events)
+}
+
+/// The engine of the measured run: a chain of neighbours for rods; for
+/// disks and spheres, plane support only when the scene has a piston wall.
+impl ForDimension for Filmed<'_> {
+    type Output = anyhow::Result<Film>;
+    fn run<const D: usize>(self) -> Self::Output {
+        let (built, seed) = start::<D>(self.spec, self.scene)?;
+        let size = built.sim_box.size;
+        let camera = Filming::new(
+            D,
+            [size[0], if D > 1 { size[1] } else { 0.0 }],
+            built.species.clone(),
+            self.spec.run_id,
+        );
+        let (movie, max_events) = (self.movie, self.max_events);
+        if D == 1 {
+            shoot::<D, Chain>(&built, camera, seed, movie, max_events)
+        } else if built.particles.iter().any(|p| p.is_plane()) {
+            shoot::<D, NeighbourList<D, true>>(&built, camera, seed, movie, max_events)
+        } else {
+            shoot::<D, NeighbourList<D>>(&built, camera, seed, movie, max_events)
+        }
     }
 }
 

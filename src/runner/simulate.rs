@@ -2,8 +2,7 @@
 //!
 //! The run loop (`simulate`) is written once against `engine::Dynamics`;
 //! which integrator moves the particles is decided by `[run] integrator`
-//! and the factory the dimension picks (`rods` or `balls`), and nowhere
-//! else. When the runner
+//! and the dimension (`exact`), and nowhere else. When the runner
 //! gives the run a checkpoint place (`checkpoint.rs`), the loop advances in
 //! short stretches and saves the run's state every few minutes of wall time,
 //! and a run that finds its checkpoint continues from it. A stretch ends at
@@ -12,6 +11,7 @@
 
 use crate::engine::{Chain, Dynamics, NeighbourList, Particle, Persist, Simulation, Stepper, Stop};
 use crate::model::descriptor::{Integrator, RunSection};
+use crate::model::dimension::{ForDimension, in_dimension};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::observe::{self, Context, ObserverSet};
@@ -27,11 +27,27 @@ use std::time::{Duration, Instant};
 /// Simulate one planned run. Errors are recorded in `runs.parquet` with the run.
 pub fn run(spec: &RunSpec) -> anyhow::Result<RunOutput> {
     let scene = scene::resolve(&spec.descriptor.scene).map_err(|e| anyhow!(e))?;
-    match scene.dimension().map_err(|e| anyhow!(e))? {
-        1 => simulate::<1>(spec, &scene, rods),
-        2 => simulate::<2>(spec, &scene, balls::<2>),
-        3 => simulate::<3>(spec, &scene, balls::<3>),
-        d => bail!("scene.dimension = {d}; use 1, 2 or 3"),
+    let d = scene.dimension().map_err(|e| anyhow!(e))?;
+    in_dimension(
+        d,
+        Simulate {
+            spec,
+            scene: &scene,
+        },
+    )
+    .map_err(|e| anyhow!(e))?
+}
+
+/// One run in the dimension of its scene.
+struct Simulate<'a> {
+    spec: &'a RunSpec,
+    scene: &'a crate::model::scene::SceneSpec,
+}
+
+impl ForDimension for Simulate<'_> {
+    type Output = anyhow::Result<RunOutput>;
+    fn run<const D: usize>(self) -> Self::Output {
+        simulate::<D>(self.spec, self.scene)
     }
 }
 
@@ -71,44 +87,36 @@ impl<const D: usize, N: Persist<D>> Checkpointable<D> for Simulation<D, N, Obser
 
 type Engine<const D: usize> = Box<dyn Checkpointable<D>>;
 
-/// Builds the dynamics of a built scene from its particles (the scene's
-/// own, or a copy), given its observers and the seed of its random stream
-/// (thermal walls), or continues the saved state given.
-type Factory<const D: usize> = fn(
-    Vec<Particle<D>>,
-    &scene::Built<D>,
-    ObserverSet<D>,
-    u64,
-    Option<&[u8]>,
-) -> anyhow::Result<Engine<D>>;
-
-/// The integrator `[run]` asks for: a fixed step, or the dimension's exact
-/// engine (which alone continues a saved state).
-fn dynamics<const D: usize>(
-    run: &RunSection,
-    exact: Factory<D>,
+/// What a run's dynamics are built from: its particles (the scene's own, a
+/// copy, or none when continuing), the built scene, its observers, the seed
+/// of its random stream (thermal walls), and the saved state to continue.
+struct Parts<'a, const D: usize> {
     particles: Vec<Particle<D>>,
-    built: &scene::Built<D>,
+    built: &'a scene::Built<D>,
     observers: ObserverSet<D>,
     seed: u64,
-    saved: Option<&[u8]>,
-) -> anyhow::Result<Engine<D>> {
+    saved: Option<&'a [u8]>,
+}
+
+/// The integrator `[run]` asks for: a fixed step, or the exact engine
+/// (which alone continues a saved state).
+fn dynamics<const D: usize>(run: &RunSection, parts: Parts<D>) -> anyhow::Result<Engine<D>> {
     let approach_check = match run.integrator {
-        Integrator::Exact => return exact(particles, built, observers, seed, saved),
+        Integrator::Exact => return exact(parts),
         Integrator::FixedStep => true,
         Integrator::FixedStepNaive => false,
     };
-    if saved.is_some() {
+    if parts.saved.is_some() {
         bail!("a fixed-step run cannot continue from a checkpoint");
     }
     let dt = run
         .dt
         .ok_or_else(|| anyhow!("`run.dt`: a fixed step needs its length"))?;
     let stepper = Stepper::new(
-        particles,
-        built.sim_box,
-        observers,
-        seed,
+        parts.particles,
+        parts.built.sim_box,
+        parts.observers,
+        parts.seed,
         dt,
         approach_check,
     )
@@ -116,46 +124,32 @@ fn dynamics<const D: usize>(
     Ok(Box::new(stepper))
 }
 
-/// Rods: the event-driven engine with a chain of neighbours.
-fn rods(
-    particles: Vec<Particle<1>>,
-    built: &scene::Built<1>,
-    observers: ObserverSet<1>,
-    seed: u64,
-    saved: Option<&[u8]>,
-) -> anyhow::Result<Engine<1>> {
-    event_driven::<1, Chain>(particles, built, observers, seed, saved)
-}
-
-/// Disks and spheres: the event-driven engine with neighbour lists, with
-/// plane support only for scenes with a piston wall (others pay nothing for it).
-fn balls<const D: usize>(
-    particles: Vec<Particle<D>>,
-    built: &scene::Built<D>,
-    observers: ObserverSet<D>,
-    seed: u64,
-    saved: Option<&[u8]>,
-) -> anyhow::Result<Engine<D>> {
-    // Above one dimension the piston is a plane.
-    if built.piston.is_some() {
-        event_driven::<D, NeighbourList<D, true>>(particles, built, observers, seed, saved)
+/// The event-driven engine: rods with a chain of neighbours; disks and
+/// spheres with neighbour lists, with plane support only for scenes with a
+/// piston wall (others pay nothing for it).
+fn exact<const D: usize>(parts: Parts<D>) -> anyhow::Result<Engine<D>> {
+    if D == 1 {
+        event_driven::<D, Chain>(parts)
+    } else if parts.built.piston.is_some() {
+        event_driven::<D, NeighbourList<D, true>>(parts)
     } else {
-        event_driven::<D, NeighbourList<D>>(particles, built, observers, seed, saved)
+        event_driven::<D, NeighbourList<D>>(parts)
     }
 }
 
 fn event_driven<const D: usize, N: Persist<D> + 'static>(
-    particles: Vec<Particle<D>>,
-    built: &scene::Built<D>,
-    observers: ObserverSet<D>,
-    seed: u64,
-    saved: Option<&[u8]>,
+    parts: Parts<D>,
 ) -> anyhow::Result<Engine<D>> {
-    let sim: Simulation<D, N, ObserverSet<D>> = match saved {
-        Some(mut bytes) => Simulation::load(&mut bytes, observers)
+    let sim: Simulation<D, N, ObserverSet<D>> = match parts.saved {
+        Some(mut bytes) => Simulation::load(&mut bytes, parts.observers)
             .map_err(|e| anyhow!("the checkpoint cannot be continued: {e}"))?,
-        None => Simulation::new(particles, built.sim_box, observers, seed)
-            .context("the scene cannot be simulated")?,
+        None => Simulation::new(
+            parts.particles,
+            parts.built.sim_box,
+            parts.observers,
+            parts.seed,
+        )
+        .context("the scene cannot be simulated")?,
     };
     Ok(Box::new(sim))
 }
@@ -295,7 +289,6 @@ pub(super) fn start<const D: usize>(
 fn simulate<const D: usize>(
     spec: &RunSpec,
     scene: &crate::model::scene::SceneSpec,
-    factory: Factory<D>,
 ) -> anyhow::Result<RunOutput> {
     let started = Instant::now();
     let (mut built, engine_seed) = start::<D>(spec, scene)?;
@@ -321,16 +314,14 @@ fn simulate<const D: usize>(
     let resumed = place.as_ref().and_then(checkpoint::read).and_then(|saved| {
         let mut set = observers().ok()?;
         set.restore_state(&saved.observers).ok()?;
-        let sim = dynamics(
-            &d.run,
-            factory,
-            Vec::new(), // the saved state has its own
-            &built,
-            set,
-            engine_seed,
-            Some(&saved.engine),
-        )
-        .ok()?;
+        let parts = Parts {
+            particles: Vec::new(), // the saved state has its own
+            built: &built,
+            observers: set,
+            seed: engine_seed,
+            saved: Some(&saved.engine),
+        };
+        let sim = dynamics(&d.run, parts).ok()?;
         Some((sim, saved))
     });
     let (mut sim, phase, wall_before, cpu_before) = match resumed {
@@ -347,15 +338,14 @@ fn simulate<const D: usize>(
             } else {
                 built.particles.clone()
             };
-            let sim = dynamics(
-                &d.run,
-                factory,
+            let parts = Parts {
                 particles,
-                &built,
-                observers()?,
-                engine_seed,
-                None,
-            )?;
+                built: &built,
+                observers: observers()?,
+                seed: engine_seed,
+                saved: None,
+            };
+            let sim = dynamics(&d.run, parts)?;
             (sim, Phase::Equilibrating, 0.0, 0.0)
         }
     };

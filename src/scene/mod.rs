@@ -4,6 +4,7 @@ pub mod build;
 pub mod check;
 pub mod compress;
 pub mod lattice;
+pub mod on_built;
 pub mod piston;
 pub mod placement;
 pub mod presets;
@@ -16,4 +17,5 @@ pub mod velocities;
 
 pub use build::{Built, build};
 pub use compress::Preparation;
+pub use on_built::{OnBuilt, on_built};
 pub use resolve::resolve;

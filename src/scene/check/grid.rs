@@ -8,14 +8,25 @@
 
 use super::{dimension, particles};
 use crate::engine::neighbours::layout;
+use crate::model::dimension::{ForDimension, in_dimension};
 use crate::model::problem::{Check, bad};
 use crate::model::scene::SceneSpec;
 
 pub fn grid(s: &SceneSpec) -> Check {
-    match dimension(s) {
-        2 => follows::<2>(s),
-        3 => follows::<3>(s),
-        _ => Ok(()),
+    in_dimension(dimension(s), Follows(s)).unwrap_or(Ok(()))
+}
+
+/// Whether the engine can follow the scene's disks or spheres (rods need
+/// no grid).
+struct Follows<'a>(&'a SceneSpec);
+
+impl ForDimension for Follows<'_> {
+    type Output = Check;
+    fn run<const D: usize>(self) -> Check {
+        if D == 1 {
+            return Ok(());
+        }
+        follows::<D>(self.0)
     }
 }
 

@@ -3,6 +3,7 @@
 //! species, at the smallest radius each may draw.
 
 use super::{dimension, positions};
+use crate::model::dimension::{ForDimension, in_dimension};
 use crate::model::problem::{Check, Problem, bad, compact};
 use crate::model::scene::{Boundary, Placement, SceneSpec};
 use crate::scene::refusal::{Blame, Refusal};
@@ -11,10 +12,17 @@ use crate::scene::space::{Slot, Space};
 use crate::scene::{lattice, piston, placement, rods};
 
 pub fn layout(s: &SceneSpec) -> Check {
-    match dimension(s) {
-        1 => at::<1>(s),
-        2 => at::<2>(s),
-        _ => at::<3>(s),
+    // Another dimension is refused before this check.
+    in_dimension(dimension(s), Room(s)).unwrap_or(Ok(()))
+}
+
+/// Room for the scene's particles in its dimension.
+struct Room<'a>(&'a SceneSpec);
+
+impl ForDimension for Room<'_> {
+    type Output = Check;
+    fn run<const D: usize>(self) -> Check {
+        at::<D>(self.0)
     }
 }
 

@@ -6,10 +6,9 @@
 
 use crate::engine::{Particle, degrees_of_freedom};
 use crate::model::run_spec::RunSpec;
-use crate::scene::Built;
+use crate::scene::{Built, OnBuilt, on_built};
 use crate::theory::microcanonical::{SpeedMarginal, VelocityMarginal};
 use crate::theory::ordered_rods::{self, RodPosition};
-use rand::SeedableRng;
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Ensemble {
@@ -74,17 +73,14 @@ impl Ensemble {
     }
 
     pub fn of_seed(scene: &crate::model::scene::SceneSpec, seed: u64) -> Option<Ensemble> {
-        fn at<const D: usize>(s: &crate::model::scene::SceneSpec, seed: u64) -> Option<Ensemble> {
-            let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-            Some(Ensemble::of(&crate::scene::build::<D>(s, &mut rng).ok()?))
+        struct Of;
+        impl OnBuilt for Of {
+            type Output = Ensemble;
+            fn on<const D: usize>(self, built: &Built<D>) -> Ensemble {
+                Ensemble::of(built)
+            }
         }
-        let scene = crate::scene::resolve(scene).ok()?;
-        match scene.dimension().ok()? {
-            1 => at::<1>(&scene, seed),
-            2 => at::<2>(&scene, seed),
-            3 => at::<3>(&scene, seed),
-            _ => None,
-        }
+        on_built(&crate::scene::resolve(scene).ok()?, seed, Of)
     }
 
     /// Kinetic energy less that of the centre of mass along conserved axes.

@@ -4,12 +4,11 @@
 
 use crate::model::descriptor::Descriptor;
 use crate::model::scene::Velocities;
-use crate::scene::Built;
+use crate::scene::{Built, OnBuilt, on_built};
 use crate::stats::late::LATE;
 use crate::theory::expansion::{Diffusive, FreeExpansion, Mixture, Speeds, compressibility};
 use crate::theory::expansion_rods::{Collisionless, Rods};
 use crate::theory::self_diffusion;
-use rand::SeedableRng;
 
 /// Mean of f over the last `LATE` of the run (see `stats::late`), and its mean square
 /// deviation from 1/2 (the mean by symmetry: a run's own mean would hide
@@ -82,17 +81,14 @@ impl Gas {
     /// The scene a descriptor gives (built from seed 0: counts and the box
     /// do not depend on the draws, radii and masses drawn from ranges do).
     pub fn of_descriptor(d: &Descriptor) -> Option<Gas> {
-        fn at<const D: usize>(d: &Descriptor) -> Option<Gas> {
-            let scene = crate::scene::resolve(&d.scene).ok()?;
-            let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0);
-            Some(Gas::of(&crate::scene::build::<D>(&scene, &mut rng).ok()?))
+        struct Of;
+        impl OnBuilt for Of {
+            type Output = Gas;
+            fn on<const D: usize>(self, built: &Built<D>) -> Gas {
+                Gas::of(built)
+            }
         }
-        match crate::scene::resolve(&d.scene).ok()?.dimension().ok()? {
-            1 => at::<1>(d),
-            2 => at::<2>(d),
-            3 => at::<3>(d),
-            _ => None,
-        }
+        on_built(&crate::scene::resolve(&d.scene).ok()?, 0, Of)
     }
 
     /// Mean free path over the box length along x at the final (whole box)

@@ -19,13 +19,12 @@ use crate::model::need::Need;
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
+use crate::scene::{Built, OnBuilt, on_built};
 use crate::stats::ensemble::Runs;
-/// The piston's frequency estimator, for studies that measure one too.
 use crate::stats::oscillation::{Oscillation, oscillation};
 use crate::theory::piston::{Law, PistonSystem};
 use crate::theory::piston_equilibrium::{degrees_of_freedom, oscillator_share};
 use estimators::{late_mean, late_share, relaxation_time};
-use rand::SeedableRng;
 use state::{Geometry, Samples};
 use std::f64::consts::TAU;
 
@@ -298,18 +297,15 @@ fn theory(d: &Descriptor, result: &str) -> Option<f64> {
 /// The dimension and the gas particles on each side of a scene's piston.
 /// Counts per side do not depend on the random draws.
 fn gas_counts(scene: &crate::model::scene::SceneSpec) -> Option<(usize, [usize; 2])> {
-    fn counts<const D: usize>(scene: &crate::model::scene::SceneSpec) -> Option<[usize; 2]> {
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0);
-        Some(Geometry::of(&crate::scene::build::<D>(scene, &mut rng).ok()?)?.particles)
+    struct Counts;
+    impl OnBuilt for Counts {
+        type Output = Option<[usize; 2]>;
+        fn on<const D: usize>(self, built: &Built<D>) -> Self::Output {
+            Some(Geometry::of(built)?.particles)
+        }
     }
     let d = scene.dimension().ok()?;
-    let n = match d {
-        1 => counts::<1>(scene),
-        2 => counts::<2>(scene),
-        3 => counts::<3>(scene),
-        _ => None,
-    }?;
-    Some((d, n))
+    Some((d, on_built(scene, 0, Counts)??))
 }
 
 /// MacKay's pictures and answer and the 2D wall's (from the descriptor's
