@@ -682,7 +682,7 @@ pub fn listing() -> String {
         "observables ([observe] series / scalars / histograms = [\"<name>\"]):"
     );
     for e in crate::observe::CATALOGUE {
-        let needs: Vec<&str> = e
+        let needs: Vec<String> = e
             .needs
             .iter()
             .map(|n| crate::observe::catalogue::need_text(*n))

@@ -303,6 +303,39 @@ fn met(need: Need, d: &Descriptor, scene: &SceneSpec, key: &str, who: &str) -> C
         |k: usize| scene.boundary.as_ref().and_then(|b| b.get(k)) != Some(&Boundary::Periodic);
     let dimension = crate::descriptor::validate_scene::dimension(scene);
     let (ok, what, hint) = match need {
+        Need::Dimension(want) => {
+            return if dimension == want {
+                Ok(())
+            } else {
+                bad(
+                    key,
+                    format!("{who} is defined in {want}D scenes; this scene is {dimension}D"),
+                    Some(&format!(
+                        "list it only for {want}D scenes (a `scene.box` of {want} lengths), or \
+                         drop it here{}",
+                        match want {
+                            2 => "; spheres have `q6`",
+                            3 => "; disks have `psi6`",
+                            _ => "",
+                        }
+                    )),
+                )
+            };
+        }
+        Need::Neighbours(k) => {
+            let n = crate::descriptor::validate_scene::particles(scene);
+            return if n > k {
+                Ok(())
+            } else {
+                bad(
+                    key,
+                    format!(
+                        "{who} takes the {k} nearest neighbours of each particle; the scene has {n}"
+                    ),
+                    Some(&format!("give the scene at least {} particles", k + 1)),
+                )
+            };
+        }
         Need::Piston => (
             scene.piston.is_some(),
             "a piston in the scene",

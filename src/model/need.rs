@@ -11,4 +11,8 @@ pub enum Need {
     Walls,
     /// At least one thermal wall.
     ThermalWalls,
+    /// A scene of this dimension (bond orders are defined in one).
+    Dimension(usize),
+    /// More particles than this many nearest neighbours of each.
+    Neighbours(usize),
 }

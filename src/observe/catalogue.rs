@@ -18,6 +18,8 @@ use super::pair_distance::PairDistance;
 use super::piston_position::PistonPosition;
 use super::position_x_each::PositionXEach;
 use super::positions::Positions;
+use super::psi6::{Psi6, Psi6Series};
+use super::q6::{Q6, Q6Series};
 use super::scaled_speed::ScaledSpeed;
 use super::scaled_velocity_x::ScaledVelocityX;
 use super::side_counts::SideCounts;
@@ -82,6 +84,10 @@ catalogue![
     EnergyX,
     PairDistance,
     TemperatureX,
+    Psi6Series,
+    Psi6,
+    Q6Series,
+    Q6,
 ];
 
 /// The entry a descriptor means by `name` under `[observe] <kind>`.
@@ -120,12 +126,14 @@ pub fn label(written: &str) -> Option<(String, &'static str)> {
 }
 
 /// What a need asks of the descriptor, as `study list` and the docs say it.
-pub fn need_text(need: Need) -> &'static str {
+pub fn need_text(need: Need) -> String {
     match need {
-        Need::Sampling => "`sample_every`",
-        Need::Piston => "a piston",
-        Need::Walls => "a walled axis",
-        Need::ThermalWalls => "a thermal wall",
+        Need::Sampling => "`sample_every`".into(),
+        Need::Piston => "a piston".into(),
+        Need::Walls => "a walled axis".into(),
+        Need::ThermalWalls => "a thermal wall".into(),
+        Need::Dimension(d) => format!("a {d}D scene"),
+        Need::Neighbours(k) => format!("more than {k} particles"),
     }
 }
 

@@ -127,7 +127,7 @@ fn observable_rows(doc: &str) -> Vec<Vec<String>> {
 
 /// A catalogue entry as its row of the table says it.
 fn documented(e: &Entry) -> Vec<String> {
-    let needs: Vec<&str> = e.needs.iter().map(|n| catalogue::need_text(*n)).collect();
+    let needs: Vec<String> = e.needs.iter().map(|n| catalogue::need_text(*n)).collect();
     vec![
         format!("`{}`", e.kind.key()),
         format!("`{}`", e.name),
