@@ -422,6 +422,25 @@ fn observables_and_analyses() {
             ],
         ),
         case(
+            "a 2D bond order in a 1D scene",
+            edit(
+                "series = [\"piston_position\"]",
+                "series = [\"piston_position\", \"psi6\"]",
+            ),
+            &[
+                "s.toml:40:30: `observe.series.1`: `psi6` is defined in 2D scenes; this scene is 1D",
+                "spheres have `q6`",
+            ],
+        ),
+        case(
+            "a 3D bond order in a 1D scene",
+            edit(
+                "series = [\"piston_position\"]",
+                "series = [\"piston_position\", \"q6\"]",
+            ),
+            &["`observe.series.1`: `q6` is defined in 3D scenes; this scene is 1D"],
+        ),
+        case(
             "a scalar listed as a series",
             edit("series = [\"piston_position\"]", "series = [\"wall_heat\"]"),
             &[
