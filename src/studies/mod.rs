@@ -133,9 +133,34 @@ pub fn series(d: &Descriptor) -> Vec<&'static str> {
     all
 }
 
-/// Each named study's results for a finished run.
+/// Each named study's results for a finished run; a study that writes a
+/// result it does not declare (a typo a section would read back as NaN), or
+/// one twice, fails the run.
 pub fn per_run(run: &Finished, out: &mut RunOutput) -> Result<(), String> {
-    named(run.descriptor).try_for_each(|s| s.per_run(run, out))
+    named(run.descriptor).try_for_each(|s| {
+        let before = out.scalars.len();
+        s.per_run(run, out)?;
+        as_declared(s, &out.scalars[before..])
+    })
+}
+
+/// Every name written is one of `study.results()`, each once.
+fn as_declared(study: &dyn Study, written: &[(String, f64)]) -> Result<(), String> {
+    for (i, (name, _)) in written.iter().enumerate() {
+        if !study.results().contains(&name.as_str()) {
+            return Err(format!(
+                "the {} analysis wrote `{name}`, which it does not declare in `results`",
+                study.name()
+            ));
+        }
+        if written[..i].iter().any(|(n, _)| n == name) {
+            return Err(format!(
+                "the {} analysis wrote `{name}` twice",
+                study.name()
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// Theory for a result, from the named study that gives it.
@@ -155,4 +180,43 @@ pub fn error_models(d: &Descriptor) -> Vec<(&'static str, ErrorModel)> {
 /// The named studies' report sections, in descriptor order.
 pub fn sections(d: &Descriptor, runs: &Runs) -> anyhow::Result<Vec<ReportSection>> {
     named(d).map(|s| s.section(d, runs)).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A study declaring `a` and `b`; only its name and results are used.
+    struct Declares;
+    impl Study for Declares {
+        fn name(&self) -> &'static str {
+            "fixture"
+        }
+        fn about(&self) -> &'static str {
+            ""
+        }
+        fn results(&self) -> &'static [&'static str] {
+            &["a", "b"]
+        }
+        fn per_run(&self, _: &Finished, _: &mut RunOutput) -> Result<(), String> {
+            Ok(())
+        }
+        fn section(&self, _: &Descriptor, _: &Runs) -> anyhow::Result<ReportSection> {
+            anyhow::bail!("not drawn")
+        }
+    }
+
+    fn written(names: &[&str]) -> Vec<(String, f64)> {
+        names.iter().map(|n| (n.to_string(), 1.0)).collect()
+    }
+
+    #[test]
+    fn a_study_writes_only_what_it_declares_once() {
+        assert!(as_declared(&Declares, &written(&["b", "a"])).is_ok());
+        assert!(as_declared(&Declares, &written(&["a"])).is_ok());
+        let typo = as_declared(&Declares, &written(&["a", "bb"])).unwrap_err();
+        assert!(typo.contains("`bb`, which it does not declare"), "{typo}");
+        let twice = as_declared(&Declares, &written(&["a", "a"])).unwrap_err();
+        assert!(twice.contains("`a` twice"), "{twice}");
+    }
 }
