@@ -1,7 +1,8 @@
 //! The k nearest neighbours of every point, for the bond-order observables
-//! (`psi6`, `q6`): nearest periodic image on periodic axes, found through a
-//! cell list so a sample costs O(N k) however large N is, and exact for any
-//! N > k (the search widens until no unseen cell can hold a nearer point).
+//! (`psi6`, `q6`; `pair_distance` shares their points): nearest periodic
+//! image on periodic axes, found through a cell list so a sample costs
+//! O(N k) however large N is, and exact for any N > k (the search widens
+//! until no unseen cell can hold a nearer point).
 
 use crate::engine::Snapshot;
 

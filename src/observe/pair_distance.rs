@@ -45,14 +45,8 @@ impl<const D: usize> Observer<D> for PairDistance {
             self.reach = 0.5 * size.iter().copied().fold(f64::INFINITY, f64::min);
             self.counts = vec![0.0; (self.reach / WIDTH).floor() as usize];
         }
-        let periodic: [bool; D] = std::array::from_fn(|k| s.sim_box.axes[k].is_periodic());
-        let at: Vec<[f64; D]> = (0..s.particles.len())
-            .filter(|&i| {
-                let p = s.particles.get(i);
-                !p.is_immovable() && !p.is_plane()
-            })
-            .map(|i| s.position(i))
-            .collect();
+        let periodic = super::neighbours::periodic(s);
+        let at = super::neighbours::points(s);
         let bins = self.counts.len();
         for (i, a) in at.iter().enumerate() {
             for b in &at[i + 1..] {

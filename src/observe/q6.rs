@@ -12,6 +12,7 @@ use super::neighbours::{nearest, periodic, points};
 use super::{Context, Entry, Kind, Observable, Part, Probe, Row, Setup};
 use crate::engine::Snapshot;
 use crate::model::need::Need;
+use std::sync::LazyLock;
 
 /// Neighbours per sphere.
 pub const NEIGHBOURS: usize = 12;
@@ -70,17 +71,21 @@ impl Observable for Q6 {
 /// sin θ e^{iφ} = x + iy; Y6,-m = (-1)^m Y6m* (the phase convention drops
 /// out of every sum over m used here).
 pub fn harmonics(r: [f64; 3]) -> [(f64, f64); 7] {
+    // K_m = √(13/(4π) (6-m)!/(6+m)!), computed once: this runs per bond.
+    static NORMS: LazyLock<[f64; 7]> = LazyLock::new(|| {
+        let mut factorials = [1.0; 13];
+        for n in 1..13 {
+            factorials[n] = factorials[n - 1] * n as f64;
+        }
+        std::array::from_fn(|m| {
+            (13.0 / (4.0 * std::f64::consts::PI) * factorials[6 - m] / factorials[6 + m]).sqrt()
+        })
+    });
     // P6(z) = (231 z⁶ - 315 z⁴ + 105 z² - 5) / 16, lowest power first.
     let mut p = [-5.0, 0.0, 105.0, 0.0, -315.0, 0.0, 231.0].map(|c| c / 16.0);
     let mut w = (1.0, 0.0);
     let mut out = [(0.0, 0.0); 7];
-    let mut factorials = [1.0; 13];
-    for n in 1..13 {
-        factorials[n] = factorials[n - 1] * n as f64;
-    }
-    for (m, y) in out.iter_mut().enumerate() {
-        let k =
-            (13.0 / (4.0 * std::f64::consts::PI) * factorials[6 - m] / factorials[6 + m]).sqrt();
+    for (y, k) in out.iter_mut().zip(NORMS.iter()) {
         let q = p.iter().rev().fold(0.0, |acc, c| acc * r[2] + c);
         *y = (k * q * w.0, k * q * w.1);
         // Next m: differentiate P once more, one more factor of x + iy.
