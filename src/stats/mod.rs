@@ -3,6 +3,7 @@
 pub mod diffusion;
 pub mod ensemble;
 pub mod error_model;
+pub mod fill;
 pub mod format;
 pub mod groups;
 pub mod late;
