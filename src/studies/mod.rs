@@ -3,18 +3,6 @@
 //! its results and its report section. Registering one is a line in
 //! `REGISTRY`; a descriptor asks for it as `[analysis.<name>]`.
 
-/// Declares a study's results once: a constant for each name, used by the
-/// code that writes it and the section that reads it (a typo is a compile
-/// error, not a NaN in the report), and `RESULTS`, all of them in order.
-macro_rules! results {
-    ($($(#[$doc:meta])* $id:ident = $name:literal;)*) => {
-        $($(#[$doc])* pub const $id: &str = $name;)*
-        /// Every result, in the order the tables show them.
-        pub const RESULTS: &[&str] = &[$($id),*];
-    };
-}
-pub(crate) use results;
-
 pub mod accuracy;
 pub mod curves;
 pub mod equilibrium;
@@ -65,14 +53,6 @@ pub enum Start<'a> {
 }
 
 impl<'a> Start<'a> {
-    pub fn dimension(&self) -> usize {
-        match self {
-            Start::Rods(_) => 1,
-            Start::Disks(_) => 2,
-            Start::Spheres(_) => 3,
-        }
-    }
-
     /// The scene of a run in dimension `D` (1, 2 or 3: the engine has no other).
     pub fn of<const D: usize>(built: &'a Built<D>) -> Start<'a> {
         let any: &dyn std::any::Any = built;
@@ -109,13 +89,7 @@ pub trait Study: Sync {
     }
     /// The scalar results it adds to each run; its section presents them.
     fn results(&self) -> &'static [&'static str];
-    /// The results it writes for a run in `dimension`: all of `results`
-    /// unless some apply only in some dimensions.
-    fn writes(&self, _dimension: usize) -> &'static [&'static str] {
-        self.results()
-    }
-    /// Add this study's results to a finished run's output: exactly
-    /// `writes`, each once.
+    /// Add this study's results to a finished run's output.
     fn per_run(&self, run: &Finished, out: &mut RunOutput) -> Result<(), String>;
     /// Theory for one of its results at a run's descriptor (sweep values
     /// applied), or None where none applies.
@@ -159,34 +133,21 @@ pub fn series(d: &Descriptor) -> Vec<&'static str> {
     all
 }
 
-/// Each named study's results for a finished run; a study that writes other
-/// than it declares (a typo a section would read back as NaN, a result
-/// left out or written twice) fails the run.
+/// Each named study's results for a finished run; a study that writes a
+/// result it does not declare (a typo a section would read back as NaN), or
+/// one twice, fails the run.
 pub fn per_run(run: &Finished, out: &mut RunOutput) -> Result<(), String> {
     named(run.descriptor).try_for_each(|s| {
         let before = out.scalars.len();
         s.per_run(run, out)?;
-        as_declared(s, s.writes(run.start.dimension()), &out.scalars[before..])
+        as_declared(s, &out.scalars[before..])
     })
 }
 
-/// The names written are `declared` (a subset of `study.results()`), each once.
-fn as_declared(
-    study: &dyn Study,
-    declared: &[&str],
-    written: &[(String, f64)],
-) -> Result<(), String> {
-    if let Some(missing) = declared
-        .iter()
-        .find(|d| !written.iter().any(|(n, _)| n == *d))
-    {
-        return Err(format!(
-            "the {} analysis declares `{missing}` but did not write it",
-            study.name()
-        ));
-    }
+/// Every name written is one of `study.results()`, each once.
+fn as_declared(study: &dyn Study, written: &[(String, f64)]) -> Result<(), String> {
     for (i, (name, _)) in written.iter().enumerate() {
-        if !declared.contains(&name.as_str()) {
+        if !study.results().contains(&name.as_str()) {
             return Err(format!(
                 "the {} analysis wrote `{name}`, which it does not declare in `results`",
                 study.name()
@@ -251,17 +212,11 @@ mod tests {
 
     #[test]
     fn a_study_writes_only_what_it_declares_once() {
-        let all = Declares.results();
-        assert!(as_declared(&Declares, all, &written(&["b", "a"])).is_ok());
-        assert!(as_declared(&Declares, &all[..1], &written(&["a"])).is_ok());
-        let missing = as_declared(&Declares, all, &written(&["a"])).unwrap_err();
-        assert!(
-            missing.contains("declares `b` but did not write it"),
-            "{missing}"
-        );
-        let typo = as_declared(&Declares, all, &written(&["a", "b", "bb"])).unwrap_err();
+        assert!(as_declared(&Declares, &written(&["b", "a"])).is_ok());
+        assert!(as_declared(&Declares, &written(&["a"])).is_ok());
+        let typo = as_declared(&Declares, &written(&["a", "bb"])).unwrap_err();
         assert!(typo.contains("`bb`, which it does not declare"), "{typo}");
-        let twice = as_declared(&Declares, all, &written(&["a", "b", "a"])).unwrap_err();
+        let twice = as_declared(&Declares, &written(&["a", "a"])).unwrap_err();
         assert!(twice.contains("`a` twice"), "{twice}");
     }
 }

@@ -102,14 +102,6 @@ impl Study for Piston {
     fn results(&self) -> &'static [&'static str] {
         RESULTS
     }
-    fn writes(&self, dimension: usize) -> &'static [&'static str] {
-        // The last eight need axes across x (`across_x`).
-        if dimension == 1 {
-            &RESULTS[..RESULTS.len() - 8]
-        } else {
-            RESULTS
-        }
-    }
     fn per_run(&self, run: &Finished, out: &mut RunOutput) -> Result<(), String> {
         let geometry = match run.start {
             Start::Rods(b) => Geometry::of(b),
