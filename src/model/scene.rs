@@ -42,6 +42,11 @@ pub struct SceneSpec {
 }
 
 impl SceneSpec {
+    /// Whether `axis` is periodic (axes the boundary does not name have walls).
+    pub fn periodic(&self, axis: usize) -> bool {
+        self.boundary.as_ref().and_then(|b| b.get(axis)) == Some(&Boundary::Periodic)
+    }
+
     /// The scene's dimension: `dimension` if given, otherwise the number of
     /// `box` lengths (or of `boundary` entries). An error when the two
     /// disagree or when nothing says.

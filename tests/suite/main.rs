@@ -54,6 +54,7 @@ mod study_errors;
 mod study_memory;
 mod study_plan;
 mod study_progress;
+mod study_registry;
 mod study_runner;
 mod study_shards;
 mod study_store;

@@ -61,6 +61,13 @@ impl Study for Accuracy {
     fn results(&self) -> &'static [&'static str] {
         RESULTS
     }
+    /// βP where the wall pressure is observed, the frequency where there is a piston.
+    fn writes(&self, d: &Descriptor) -> Vec<&'static str> {
+        let walls = d.observe.scalars.iter().any(|n| n == "wall_pressure");
+        let piston = crate::scene::resolve(&d.scene).is_ok_and(|s| s.piston.is_some());
+        let given = [true, walls, piston];
+        RESULTS.iter().zip(given).filter(|(_, g)| *g).map(|(r, _)| *r).collect()
+    }
     fn per_run(&self, run: &Finished, out: &mut RunOutput) -> Result<(), String> {
         let duration = run.context.duration;
         out.scalars.push((

@@ -1,8 +1,8 @@
 //! What one run adds: for rods, the lightest and heaviest particle's
 //! Gaussian fit and excess kurtosis; for disks and spheres, kT, the
 //! kurtosis of v_x, g at contact beside the pressure, and the density at
-//! a wall beside the wall pressure. Each result is written only when the
-//! run observed what it needs.
+//! a wall beside the wall pressure. Each group is written when the run
+//! observed what it needs, as NaN where the scene does not allow it.
 
 use super::ensemble::Ensemble;
 use super::moments;
@@ -38,7 +38,8 @@ pub fn measure(e: &Ensemble, ctx: &Context, out: &mut RunOutput) {
     if let Some(h) = histogram(out, "scaled_velocity_x") {
         add.push(("kurtosis_vx", moments::of(h).excess_kurtosis));
     }
-    if let Some(g) = histogram(out, "pair_distance").and_then(|h| contact(e, h)) {
+    if let Some(h) = histogram(out, "pair_distance") {
+        let g = contact(e, h).unwrap_or(f64::NAN);
         let n = e.balls.len() as f64;
         let z = 1.0 + contact_factor(e.dimension) * e.packing() * (n - 1.0) / n * g;
         add.extend([
@@ -55,9 +56,8 @@ pub fn measure(e: &Ensemble, ctx: &Context, out: &mut RunOutput) {
             add.extend([("Z_virial", zv), ("Z_contact_over_virial", z / zv)]);
         }
     }
-    if let (Some(h), Some(p)) = (histogram(out, "density_x"), out.scalar("wall_pressure"))
-        && let Some(n) = wall_density(e, h)
-    {
+    if let (Some(h), Some(p)) = (histogram(out, "density_x"), out.scalar("wall_pressure")) {
+        let n = wall_density(e, h).unwrap_or(f64::NAN);
         add.extend([
             ("wall_density", n),
             ("contact_theorem_ratio", n * e.kt() / p),

@@ -24,8 +24,8 @@ use crate::stats::ensemble::Runs;
 pub use ensemble::Ensemble;
 pub use tests_of::{Tests, tests_of};
 
-/// Every result `per_run` may add (each only where the run observed what
-/// it needs); the report's equilibrium section presents them.
+/// Every result `per_run` may add (each group where the run observes what
+/// it needs, see `writes`); the report's equilibrium section presents them.
 pub const RESULTS: &[&str] = &[
     "kT",
     "lightest_mass",
@@ -63,6 +63,29 @@ impl Study for Equilibrium {
     }
     fn results(&self) -> &'static [&'static str] {
         RESULTS
+    }
+    /// kT always; each other group where the run observes what it is
+    /// measured from (NaN where the scene does not allow it: g at contact
+    /// needs a periodic box of one size, the wall density walls along x).
+    fn writes(&self, d: &Descriptor) -> Vec<&'static str> {
+        let o = &d.observe;
+        let histogram = |n: &str| o.histograms.iter().any(|h| h == n);
+        let scalar = |n: &str| o.scalars.iter().any(|s| s == n);
+        let contact = histogram("pair_distance");
+        RESULTS
+            .iter()
+            .copied()
+            .filter(|r| match *r {
+                "kT" => true,
+                "kurtosis_vx" => histogram("scaled_velocity_x"),
+                "packing_fraction" | "g_contact" | "Z_contact" => contact,
+                "Z_virial" | "Z_contact_over_virial" => contact && scalar("virial_pressure"),
+                "wall_density" | "contact_theorem_ratio" => {
+                    histogram("density_x") && scalar("wall_pressure")
+                }
+                _ => histogram("velocity_x_each"),
+            })
+            .collect()
     }
     fn per_run(&self, run: &Finished, out: &mut RunOutput) -> Result<(), String> {
         let e = match run.start {

@@ -57,6 +57,15 @@ impl Study for Expansion {
     fn results(&self) -> &'static [&'static str] {
         RESULTS
     }
+    /// D along y where the run records the mean-squared displacement.
+    fn writes(&self, d: &Descriptor) -> Vec<&'static str> {
+        let msd = d.observe.series.iter().any(|s| s == "mean_squared_displacement");
+        RESULTS
+            .iter()
+            .copied()
+            .filter(|r| msd || *r != "diffusion_measured")
+            .collect()
+    }
     fn per_run(&self, run: &Finished, out: &mut RunOutput) -> Result<(), String> {
         let gas = match run.start {
             Start::Rods(b) => Gas::of(b),
@@ -116,7 +125,8 @@ impl Study for Expansion {
             ]
             .map(|(k, v)| (k.to_string(), v)),
         );
-        if let Some(d) = measured {
+        if self.writes(run.descriptor).contains(&"diffusion_measured") {
+            let d = measured.unwrap_or(f64::NAN);
             out.scalars.push(("diffusion_measured".into(), d));
         }
         profiles::pool(out);

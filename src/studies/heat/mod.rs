@@ -47,8 +47,9 @@ pub const OPTIONS: &[StudyOption] = &[
     },
 ];
 
-/// Every result `per_run` adds (relaxation runs the first group, conduction
-/// runs the second); the report's heat section presents them.
+/// Every result `per_run` adds: three for every run, then eight for
+/// relaxation runs and fifteen for conduction runs (`writes` splits them
+/// there); the report's heat section presents them.
 pub const RESULTS: &[&str] = &[
     "particles",
     "packing_fraction",
@@ -118,6 +119,16 @@ impl Study for Heat {
     }
     fn results(&self) -> &'static [&'static str] {
         RESULTS
+    }
+    fn writes(&self, d: &Descriptor) -> Vec<&'static str> {
+        let (common, rest) = RESULTS.split_at(3);
+        let (relaxation, conduction) = rest.split_at(8);
+        let own = match Gas::of(d).and_then(|gas| gas.experiment()) {
+            Ok(Experiment::Relax { .. }) => relaxation,
+            Ok(Experiment::Conduct { .. }) => conduction,
+            Err(_) => &[],
+        };
+        [common, own].concat()
     }
     fn per_run(&self, run: &Finished, out: &mut RunOutput) -> Result<(), String> {
         let d = run.descriptor;

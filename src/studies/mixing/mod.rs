@@ -101,6 +101,29 @@ impl Study for Mixing {
     fn results(&self) -> &'static [&'static str] {
         RESULTS
     }
+    /// Rods: the hot rod's spreading; disks: the box, then mixing between
+    /// walls along x or diffusion in a periodic box.
+    fn writes(&self, d: &Descriptor) -> Vec<&'static str> {
+        let Ok(scene) = crate::scene::resolve(&d.scene) else {
+            return Vec::new();
+        };
+        let rods = scene.dimension() == Ok(1);
+        let disks = scene.dimension() == Ok(2);
+        let apart = disks && !scene.periodic(0);
+        let bulk = disks && scene.periodic(0) && scene.periodic(1);
+        RESULTS
+            .iter()
+            .copied()
+            .filter(|r| match *r {
+                "particles" => rods || disks,
+                "mixed" | "mixing_time" => rods || apart,
+                "packing_fraction" | "mass_ratio" | "knudsen" => disks,
+                "late_left_fraction" => apart,
+                "diffusion" | "diffusion_enskog" | "diffusion_ratio" | "memory_ratio" => bulk,
+                _ => rods,
+            })
+            .collect()
+    }
     fn per_run(&self, run: &Finished, out: &mut RunOutput) -> Result<(), String> {
         match run.start {
             Start::Rods(b) => rods::per_run(run.descriptor, b, out),

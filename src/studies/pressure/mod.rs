@@ -27,9 +27,7 @@ use crate::stats::ensemble::Runs;
 pub use equations::{Equation, of as equations};
 pub use packing::of_scene as described_packing;
 
-/// The results it adds to each run (those a run cannot measure are left
-/// out: `Z_wall` without walls, the block and equilibration results
-/// without a pressure series).
+/// The results it can add to a run; `writes` says which a descriptor gets.
 pub const RESULTS: &[&str] = &[
     "Z",
     "Z_wall",
@@ -79,6 +77,24 @@ impl Study for Pressure {
     fn results(&self) -> &'static [&'static str] {
         RESULTS
     }
+    /// `Z_wall` and `Z_virial` where that pressure is observed, the block
+    /// and equilibration results where a pressure series is.
+    fn writes(&self, d: &Descriptor) -> Vec<&'static str> {
+        let o = &d.observe;
+        let observed = |name: &str| o.scalars.iter().chain(&o.series).any(|n| n == name);
+        let series = o.series.iter().any(|n| n.ends_with("_pressure"));
+        RESULTS
+            .iter()
+            .copied()
+            .filter(|r| match *r {
+                "Z_wall" => observed("wall_pressure"),
+                "Z_virial" => observed("virial_pressure"),
+                "equilibration_cut" | "Z_block_stderr" | "block_time" | "block_doubling"
+                | "Z_drift" => series,
+                _ => true,
+            })
+            .collect()
+    }
     fn per_run(&self, run: &Finished, out: &mut RunOutput) -> Result<(), String> {
         let (piston, m) = match run.start {
             Start::Rods(b) => (b.piston, measure::measure(&b.particles, run.context, out)),
@@ -102,8 +118,9 @@ impl Study for Pressure {
             m.run_stderr,
             m.drift,
         ];
+        let writes = self.writes(run.descriptor);
         for (name, v) in RESULTS.iter().zip(values) {
-            if !v.is_nan() {
+            if writes.contains(name) {
                 out.scalars.push((name.to_string(), v));
             }
         }

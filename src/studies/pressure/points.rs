@@ -87,7 +87,7 @@ pub fn points(runs: &[(RunSpec, RunOutput)]) -> Vec<Point> {
     let mut by_id: BTreeMap<u64, Vec<&(RunSpec, RunOutput)>> = BTreeMap::new();
     for r in runs
         .iter()
-        .filter(|(s, o)| s.case.is_none() && o.scalar("Z").is_some())
+        .filter(|(s, o)| s.case.is_none() && o.scalar("Z").is_some_and(|z| !z.is_nan()))
     {
         by_id.entry(r.0.point_id).or_default().push(r);
     }
@@ -97,7 +97,13 @@ pub fn points(runs: &[(RunSpec, RunOutput)]) -> Vec<Point> {
 fn point(rs: &[&(RunSpec, RunOutput)]) -> Option<Point> {
     let d = &rs[0].0.descriptor;
     let scene = crate::scene::resolve(&d.scene).ok()?;
-    let of = |name: &str| -> Vec<f64> { rs.iter().filter_map(|(_, o)| o.scalar(name)).collect() };
+    // The measured values of a result (a run writes NaN where it could not measure it).
+    let of = |name: &str| -> Vec<f64> {
+        rs.iter()
+            .filter_map(|(_, o)| o.scalar(name))
+            .filter(|v| !v.is_nan())
+            .collect()
+    };
     let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
     let stats_if = |name: &str| {
         let v = of(name);
@@ -117,6 +123,7 @@ fn point(rs: &[&(RunSpec, RunOutput)]) -> Option<Point> {
     let paired: Vec<f64> = rs
         .iter()
         .filter_map(|(_, o)| Some(o.scalar("Z_wall")? - o.scalar("Z_virial")?))
+        .filter(|v| !v.is_nan())
         .collect();
     let walls = scene
         .boundary
