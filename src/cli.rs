@@ -5,16 +5,16 @@ use crate::descriptor::errors::{DescriptorError, StudyError};
 use crate::descriptor::load::{Loaded, show};
 use crate::descriptor::sweep;
 use crate::model::run_spec::RunSpec;
-use crate::runner::collect;
-use crate::runner::estimate::{self, RunCost};
-use crate::runner::origin::Origin;
+use crate::runner::cluster::shard::{self, Shard};
+use crate::runner::cluster::slurm::{self, SlurmJob};
+use crate::runner::execute::progress::{ProgressMode, human_duration};
+use crate::runner::execute::run::{SimulateFn, Subset};
 use crate::runner::pipeline::{self, CollectOptions, Slice, StudyOptions};
 use crate::runner::plan;
-use crate::runner::progress::{ProgressMode, human_duration};
-use crate::runner::run::{SimulateFn, Subset};
-use crate::runner::shard::{self, Shard};
-use crate::runner::slurm::{self, SlurmJob};
-use crate::runner::status::{self, cpu_hours};
+use crate::runner::plan::estimate::{self, RunCost};
+use crate::runner::plan::origin::{Flags, Origin};
+use crate::runner::store::collect;
+use crate::runner::store::status::{self, cpu_hours};
 use clap::{Args, Parser, Subcommand};
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
@@ -69,6 +69,16 @@ struct PlanArgs {
     /// Accept plans of more than 100000 runs.
     #[arg(long)]
     yes: bool,
+}
+
+impl PlanArgs {
+    fn flags(&self) -> Flags {
+        Flags {
+            quick: self.quick,
+            replicas: self.replicas,
+            yes: self.yes,
+        }
+    }
 }
 
 #[derive(Debug, Args)]
@@ -406,8 +416,8 @@ fn slurm_job(a: &SlurmArgs) -> Result<i32, StudyError> {
     let absolute = |p: &Path| std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf());
     // What goes into the scripts is checked first (`script_text`).
     slurm::check_flags(a.partition.as_deref(), a.mem.as_deref(), a.time.as_deref())?;
-    crate::runner::script_text::path_text("FILE", &absolute(&a.plan.file))?;
-    let loaded = pipeline::prepare(&a.plan.file, a.plan.replicas, a.plan.quick)?;
+    crate::runner::cluster::script_text::path_text("FILE", &absolute(&a.plan.file))?;
+    let loaded = pipeline::prepare(&a.plan.file, a.plan.flags())?;
     pipeline::confirm_size(&loaded, a.plan.yes)?;
     let specs = plan::plan(&loaded)?;
     pipeline::confirm_cost(&loaded, &specs, a.plan.yes)?;
@@ -430,16 +440,10 @@ fn slurm_job(a: &SlurmArgs) -> Result<i32, StudyError> {
         .out
         .clone()
         .unwrap_or_else(|| pipeline::default_out_dir(&loaded, a.plan.quick));
-    crate::runner::script_text::directive_path("--out", &absolute(&out))?;
-    crate::runner::outdir::check(&out, a.force)?;
+    crate::runner::cluster::script_text::directive_path("--out", &absolute(&out))?;
+    crate::runner::store::outdir::check(&out, a.force)?;
     // So `study status OUT` knows the plan before any task has started.
-    let origin = Origin::new(
-        &a.plan.file,
-        &loaded,
-        a.plan.quick,
-        a.plan.replicas,
-        a.plan.yes,
-    );
+    let origin = Origin::new(&a.plan.file, &loaded, a.plan.flags());
     pipeline::guard(&specs, Subset::All, &out, &origin)?;
     let study = std::env::current_exe()
         .map_err(|e| StudyError::Other(anyhow::anyhow!("cannot find the study executable: {e}")))?;
@@ -447,9 +451,7 @@ fn slurm_job(a: &SlurmArgs) -> Result<i32, StudyError> {
         study,
         file: absolute(&a.plan.file),
         out: absolute(&out),
-        quick: a.plan.quick,
-        replicas: a.plan.replicas,
-        yes: a.plan.yes,
+        flags: a.plan.flags(),
         name: loaded.descriptor.study.name.clone(),
         shards: a.shards,
         cpus: a.cpus,
@@ -459,7 +461,7 @@ fn slurm_job(a: &SlurmArgs) -> Result<i32, StudyError> {
         checkpoint_every: a.checkpoint_every,
     };
     let (shards_path, collect_path) = job.write()?;
-    crate::runner::origin::save(&job.out, &origin)?;
+    crate::runner::plan::origin::save(&job.out, &origin)?;
     let seconds = shard::estimated_seconds(&specs);
     let loads = shard::loads(&seconds, &shard::deal(&seconds, a.shards), a.shards);
     emit(&slurm_summary(
@@ -542,7 +544,7 @@ fn slurm_summary(
 }
 
 fn validate(a: &PlanArgs) -> Result<i32, StudyError> {
-    let loaded = pipeline::prepare(&a.file, a.replicas, a.quick)?;
+    let loaded = pipeline::prepare(&a.file, a.flags())?;
     pipeline::confirm_size(&loaded, a.yes)?;
     let specs = plan::plan(&loaded)?;
     pipeline::confirm_cost(&loaded, &specs, a.yes)?;
@@ -586,7 +588,7 @@ pub fn describe_plan(loaded: &Loaded, specs: &[RunSpec], threads: usize) -> Stri
         d.study.replicas,
         specs.len()
     );
-    out += &crate::runner::error_bars::describe(specs);
+    out += &crate::runner::plan::error_bars::describe(specs);
     if unknown {
         out += &format!(
             "  estimated cost: unknown for {} of {} points (their scenes give no collision \

@@ -7,7 +7,7 @@ static ALLOCATOR: bonkers::pages::HugePages = bonkers::pages::HugePages;
 fn main() {
     let code = bonkers::cli::main(
         std::env::args_os().collect(),
-        &bonkers::runner::simulate::run,
+        &bonkers::runner::execute::simulate::run,
     );
     std::process::exit(code);
 }

@@ -1,5 +1,5 @@
 //! The seam between a run loop and whatever moves the particles. The run
-//! loop (`runner::simulate`) talks only to this trait, so a second integrator
+//! loop (`runner::execute::simulate`) talks only to this trait, so a second integrator
 //! (the fixed-step method of the accuracy study) plugs in beside the exact
 //! event-driven engine without touching observers or studies.
 //!

@@ -7,16 +7,18 @@ use crate::descriptor::load::{self, Loaded};
 use crate::descriptor::sweep::{self, CONFIRM_ABOVE};
 use crate::files::write_atomic;
 use crate::model::run_spec::RunSpec;
-use crate::runner::checkpoint;
-use crate::runner::collect::{self, Collected, Invocation, RunCommand};
-pub use crate::runner::confirm::confirm_cost;
-use crate::runner::lock::OutLock;
-use crate::runner::origin::{self, Origin};
-use crate::runner::outdir;
+use crate::runner::cluster::shard::{self, Shard};
+use crate::runner::execute::checkpoint;
+use crate::runner::execute::progress::ProgressMode;
+use crate::runner::execute::run::{
+    self, RunnerOptions, RunnerReport, SimulateFn, Subset, run_subset,
+};
 use crate::runner::plan;
-use crate::runner::progress::ProgressMode;
-use crate::runner::run::{self, RunnerOptions, RunnerReport, SimulateFn, Subset, run_subset};
-use crate::runner::shard::{self, Shard};
+pub use crate::runner::plan::confirm::confirm_cost;
+use crate::runner::plan::origin::{self, Flags, Origin};
+use crate::runner::store::collect::{self, Collected, Invocation, RunCommand};
+use crate::runner::store::lock::OutLock;
+use crate::runner::store::outdir;
 use anyhow::Context;
 use std::ops::RangeInclusive;
 use std::path::{Path, PathBuf};
@@ -60,6 +62,26 @@ pub struct CollectOptions {
     pub command_line: Vec<String>,
 }
 
+impl StudyOptions {
+    pub fn flags(&self) -> Flags {
+        Flags {
+            quick: self.quick,
+            replicas: self.replicas,
+            yes: self.yes,
+        }
+    }
+}
+
+impl CollectOptions {
+    pub fn flags(&self) -> Flags {
+        Flags {
+            quick: self.quick,
+            replicas: self.replicas,
+            yes: self.yes,
+        }
+    }
+}
+
 /// What a finished study did.
 #[derive(Debug, Clone)]
 pub struct StudyOutcome {
@@ -73,15 +95,8 @@ pub struct StudyOutcome {
 }
 
 /// Load the descriptor and apply `--quick` and `--replicas`, in that order.
-pub fn prepare(path: &Path, replicas: Option<u32>, quick: bool) -> Result<Loaded, DescriptorError> {
-    let mut loaded = load::load(path)?;
-    if quick {
-        loaded = load::quick(&loaded)?;
-    }
-    if let Some(n) = replicas {
-        loaded = load::with_replicas(&loaded, n)?;
-    }
-    Ok(loaded)
+pub fn prepare(path: &Path, flags: Flags) -> Result<Loaded, DescriptorError> {
+    flags.apply(load::load(path)?)
 }
 
 /// Refuse plans too large to start by accident.
@@ -127,31 +142,15 @@ struct Planned {
 }
 
 /// The plan of a `study run` with `options`.
-fn plan_run(path: &Path, options: &StudyOptions) -> Result<Planned, StudyError> {
-    plan_study(
-        path,
-        options.replicas,
-        options.quick,
-        options.yes,
-        options.out.as_ref(),
-    )
-}
-
-fn plan_study(
-    path: &Path,
-    replicas: Option<u32>,
-    quick: bool,
-    yes: bool,
-    out: Option<&PathBuf>,
-) -> Result<Planned, StudyError> {
-    let loaded = prepare(path, replicas, quick)?;
-    confirm_size(&loaded, yes)?;
+fn plan_study(path: &Path, flags: Flags, out: Option<&PathBuf>) -> Result<Planned, StudyError> {
+    let loaded = prepare(path, flags)?;
+    confirm_size(&loaded, flags.yes)?;
     let specs = plan::plan(&loaded)?;
-    confirm_cost(&loaded, &specs, yes)?;
+    confirm_cost(&loaded, &specs, flags.yes)?;
     let out_dir = out
         .cloned()
-        .unwrap_or_else(|| default_out_dir(&loaded, quick));
-    let origin = Origin::new(path, &loaded, quick, replicas, yes);
+        .unwrap_or_else(|| default_out_dir(&loaded, flags.quick));
+    let origin = Origin::new(path, &loaded, flags);
     Ok(Planned {
         loaded,
         specs,
@@ -178,7 +177,7 @@ fn plan_folder(out_dir: &Path) -> Result<Planned, StudyError> {
 impl Planned {
     fn rerun(&self) -> RunCommand {
         let o = &self.origin;
-        rerun(&self.path, &self.out_dir, o.quick, o.replicas, o.yes)
+        rerun(&self.path, &self.out_dir, o.flags)
     }
 }
 
@@ -226,42 +225,19 @@ fn claim_shared(out_dir: &Path, shard: Option<Shard>, force: bool) -> Result<Out
         .inspect_err(|_| unmake(&made))?)
 }
 
-/// The `study run` command that runs (or resumes) the plan these flags make,
-/// into `out_dir`: what to type when runs are missing.
-pub fn run_command(
-    path: &Path,
-    out_dir: &Path,
-    quick: bool,
-    replicas: Option<u32>,
-    yes: bool,
-) -> String {
-    rerun(path, out_dir, quick, replicas, yes).whole()
-}
-
-/// `run_command` in parts, so a `--runs` can go between them.
-pub fn rerun(
-    path: &Path,
-    out_dir: &Path,
-    quick: bool,
-    replicas: Option<u32>,
-    yes: bool,
-) -> RunCommand {
+/// The `study run` command that runs (or resumes) the plan these flags
+/// make into `out_dir`, in parts so a `--runs` can go between them.
+pub fn rerun(path: &Path, out_dir: &Path, flags: Flags) -> RunCommand {
     let out = shell_word(&out_dir.to_string_lossy());
     let head = format!(
         "study run {} --out {out}",
         shell_word(&path.to_string_lossy())
     );
-    let mut tail = String::new();
-    if quick {
-        tail += " --quick";
+    RunCommand {
+        head,
+        tail: flags.text(),
+        out,
     }
-    if let Some(n) = replicas {
-        tail += &format!(" --replicas {n}");
-    }
-    if yes {
-        tail += " --yes";
-    }
-    RunCommand { head, tail, out }
 }
 
 /// `word` as a POSIX shell reads it back: bare if it is plain, else quoted.
@@ -346,12 +322,14 @@ pub fn guard(
     };
     let whose = match &saved {
         Some(o) => format!(
-            "the plan its {} saved ({}{}{})",
+            "the plan its {} saved ({}{})",
             origin::ORIGIN_FILE,
             shell_word(&o.file.to_string_lossy()),
-            if o.quick { " --quick" } else { "" },
-            o.replicas
-                .map_or(String::new(), |n| format!(" --replicas {n}"))
+            Flags {
+                yes: false,
+                ..o.flags
+            }
+            .text()
         ),
         None => "another descriptor".to_string(),
     };
@@ -366,7 +344,8 @@ pub fn guard(
 
 /// Two origins plan the same runs (where the descriptor file lies aside).
 fn same_plan(a: &Origin, b: &Origin) -> bool {
-    (&a.text, a.quick, a.replicas) == (&b.text, b.quick, b.replicas)
+    let plans = |o: &Origin| (o.text.clone(), o.flags.quick, o.flags.replicas);
+    plans(a) == plans(b)
 }
 
 /// Run the study at `path`: its whole plan, then collect. Completed runs
@@ -381,7 +360,7 @@ pub fn run_study(
 ) -> Result<StudyOutcome, StudyError> {
     let started = SystemTime::now();
     let clock = Instant::now();
-    let planned = plan_run(path, options)?;
+    let planned = plan_study(path, options.flags(), options.out.as_ref())?;
     let _lock = claim(&planned.out_dir, options.force)?;
     let (report, runs_wall_seconds) =
         compute(&planned, Subset::All, options, Claim::Whole, simulate, stop)?;
@@ -421,7 +400,7 @@ pub fn run_part(
     simulate: &SimulateFn<'_>,
     stop: &AtomicBool,
 ) -> Result<RunnerReport, StudyError> {
-    let planned = plan_run(path, options)?;
+    let planned = plan_study(path, options.flags(), options.out.as_ref())?;
     let _lock = claim(&planned.out_dir, options.force)?;
     let claim = Claim::Whole;
     Ok(compute(&planned, subset, options, claim, simulate, stop)?.0)
@@ -473,7 +452,7 @@ pub fn run_slice(
     simulate: &SimulateFn<'_>,
     stop: &AtomicBool,
 ) -> Result<RunnerReport, StudyError> {
-    let planned = plan_run(path, options)?;
+    let planned = plan_study(path, options.flags(), options.out.as_ref())?;
     // The ids first: ids outside the plan are bad input, and nothing is
     // written before that is known.
     let (ids, shard) = match slice {
@@ -598,13 +577,7 @@ pub fn folder_plan(out_dir: &Path) -> Result<(Loaded, Vec<RunSpec>, RunCommand),
 pub fn collect_study(path: &Path, options: &CollectOptions) -> Result<Collected, StudyError> {
     let started = SystemTime::now();
     let clock = Instant::now();
-    let planned = plan_study(
-        path,
-        options.replicas,
-        options.quick,
-        options.yes,
-        options.out.as_ref(),
-    )?;
+    let planned = plan_study(path, options.flags(), options.out.as_ref())?;
     let invocation = Invocation {
         command_line: options.command_line.clone(),
         started,

@@ -9,7 +9,7 @@
 
 use bonkers::descriptor::load::parse;
 use bonkers::model::descriptor::Descriptor;
-use bonkers::runner::error_bars::two_digits;
+use bonkers::runner::plan::error_bars::two_digits;
 use bonkers::runner::plan::plan;
 use bonkers::stats::error_model::scatter_uncertainty_of;
 use bonkers::stats::summary::Stats;
@@ -33,7 +33,7 @@ fn predicted_and_measured(text: &str) -> (ErrorModel, Vec<f64>) {
                 scope.spawn(move || {
                     chunk
                         .iter()
-                        .map(|s| bonkers::runner::simulate::run(s).expect("run"))
+                        .map(|s| bonkers::runner::execute::simulate::run(s).expect("run"))
                         .filter_map(|o| o.scalar(result))
                         .collect::<Vec<f64>>()
                 })

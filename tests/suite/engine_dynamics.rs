@@ -1,5 +1,5 @@
 //! The run loop's view of the engine: a run driven only through the
-//! `Dynamics` trait (as `runner::simulate` drives it) must reach its stop,
+//! `Dynamics` trait (as `runner::execute::simulate` drives it) must reach its stop,
 //! count what it did, conserve energy to round-off and feed its observer the
 //! events and samples the trait's contract promises, in time order.
 

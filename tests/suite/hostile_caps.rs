@@ -6,8 +6,8 @@
 //! within one, and the report keeps what it leaves out in its tables.
 
 use crate::bounded::{Finished, finish, limited, names};
-use bonkers::runner::record::RunRecord;
 use bonkers::runner::store::read_parquet;
+use bonkers::runner::store::record::RunRecord;
 use std::path::Path;
 use std::time::{Duration, Instant};
 

@@ -8,8 +8,8 @@
 use crate::bounded::{config, names, study};
 use crate::study_common::PISTON;
 use bonkers::descriptor::load::{Loaded, parse, quick};
-use bonkers::runner::estimate;
 use bonkers::runner::pipeline;
+use bonkers::runner::plan::estimate;
 use bonkers::runner::plan::plan;
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;

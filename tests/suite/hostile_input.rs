@@ -339,8 +339,13 @@ fn names_at_the_limit_are_written() {
     let out = dir.path().join("out");
     let options = run_options(&out, 1);
     let stop = AtomicBool::new(false);
-    let outcome = pipeline::run_study(&file, &options, &bonkers::runner::simulate::run, &stop)
-        .unwrap_or_else(|e| panic!("{e}"));
+    let outcome = pipeline::run_study(
+        &file,
+        &options,
+        &bonkers::runner::execute::simulate::run,
+        &stop,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(outcome.failed, 0);
     assert!(out.join("series.parquet").is_file());
     let longest = std::fs::read_dir(&out)

@@ -188,7 +188,7 @@ fn user_text_reaches_the_report_as_text() {
     let outcome = pipeline::run_study(
         &file,
         &run_options(&out, 2),
-        &bonkers::runner::simulate::run,
+        &bonkers::runner::execute::simulate::run,
         &AtomicBool::new(false),
     )
     .unwrap_or_else(|e| panic!("{e}"));

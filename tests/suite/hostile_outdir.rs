@@ -6,9 +6,9 @@
 
 use crate::study_common::{PISTON, fake, run_into, run_options, tables, write_descriptor};
 use bonkers::descriptor::load::parse;
+use bonkers::runner::cluster::shard::Shard;
 use bonkers::runner::pipeline::{Slice, StudyOptions, collect_folder, run_slice, run_study};
 use bonkers::runner::plan::plan;
-use bonkers::runner::shard::Shard;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -410,7 +410,7 @@ fn published(out: &Path) -> BTreeMap<String, Vec<u8>> {
         .unwrap()
         .flatten()
         .map(|e| e.file_name().to_string_lossy().into_owned())
-        .filter(|n| bonkers::runner::publish::published_kind(n))
+        .filter(|n| bonkers::runner::store::publish::published_kind(n))
         .filter(|n| out.join(n).is_file())
         .map(|n| {
             let bytes = std::fs::read(out.join(&n)).unwrap();

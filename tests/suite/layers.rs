@@ -35,7 +35,7 @@ fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
     }
 }
 
-/// The top-level module a source file belongs to (`src/runner/plan.rs` ->
+/// The top-level module a source file belongs to (`src/runner/plan/mod.rs` ->
 /// `runner`, `src/cli.rs` -> `cli`); None for the crate root and the binary.
 fn module_of(src: &Path, file: &Path) -> Option<String> {
     let rel = file.strip_prefix(src).ok()?;

@@ -5,9 +5,9 @@
 use bonkers::descriptor::load::parse;
 use bonkers::model::movie::MovieSpec;
 use bonkers::report::movie::svg;
-use bonkers::runner::movie::film;
+use bonkers::runner::execute::movie::film;
+use bonkers::runner::execute::simulate;
 use bonkers::runner::plan::plan;
-use bonkers::runner::simulate;
 
 const RODS: &str = r#"
 [study]

@@ -9,10 +9,10 @@ use crate::study_common::{
 };
 use bonkers::model::run_output::RunOutput;
 use bonkers::model::run_spec::RunSpec;
-use bonkers::runner::checkpoint::{self, Place};
-use bonkers::runner::lock::OutLock;
+use bonkers::runner::cluster::shard::Shard;
+use bonkers::runner::execute::checkpoint::{self, Place};
 use bonkers::runner::pipeline::{Slice, StudyOptions, run_slice, run_study};
-use bonkers::runner::shard::Shard;
+use bonkers::runner::store::lock::OutLock;
 use bonkers::runner::store::read_parquet;
 use polars::prelude::DataFrame;
 use std::os::unix::fs::symlink;
@@ -578,7 +578,7 @@ fn a_record_changed_after_it_was_written_is_made_again() {
     assert_eq!(counting.take(), 2);
     assert_same(&made, &tables(&out));
     let remade = std::fs::read_to_string(path(0)).unwrap();
-    assert!(bonkers::runner::record::RunRecord::from_json(&remade).is_ok());
+    assert!(bonkers::runner::store::record::RunRecord::from_json(&remade).is_ok());
 
     // The command line: `collect` lists them, `run` says why it redoes them.
     std::fs::write(path(0), tamper(&text)).unwrap();

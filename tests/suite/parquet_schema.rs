@@ -5,7 +5,7 @@
 use base64::Engine;
 use bonkers::model::run_output::{Histogram, RunOutput, Series};
 use bonkers::model::summary::SummaryRow;
-use bonkers::runner::record::RunRecord;
+use bonkers::runner::store::record::RunRecord;
 use bonkers::runner::store::{read_parquet, write_tables};
 use polars_arrow::datatypes::{ArrowDataType, ArrowSchema};
 use std::path::Path;

@@ -19,7 +19,7 @@ pub fn ensemble(text: &str) -> Vec<(RunSpec, RunOutput)> {
         .expect("plan")
         .into_iter()
         .map(|r| {
-            let out = bonkers::runner::simulate::run(&r).expect("run");
+            let out = bonkers::runner::execute::simulate::run(&r).expect("run");
             (r, out)
         })
         .collect()
@@ -72,7 +72,7 @@ pub fn geometry<const D: usize>(spec: &RunSpec) -> Geometry {
 /// stored series must hold every sample: at most 4000 of them).
 pub fn measure_with(spec: &RunSpec, out: &RunOutput, g: &Geometry) -> Vec<(&'static str, f64)> {
     let samples = Samples::of(out).expect("piston series");
-    assert!(samples.len() <= bonkers::runner::simulate::MAX_STORED_POINTS);
+    assert!(samples.len() <= bonkers::runner::execute::simulate::MAX_STORED_POINTS);
     measure(g, &samples, &Options::of(&spec.descriptor))
 }
 

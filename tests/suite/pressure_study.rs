@@ -19,7 +19,7 @@ fn ensemble(text: &str) -> Vec<(RunSpec, RunOutput)> {
         .expect("plan")
         .into_iter()
         .map(|r| {
-            let out = bonkers::runner::simulate::run(&r).expect("run");
+            let out = bonkers::runner::execute::simulate::run(&r).expect("run");
             (r, out)
         })
         .collect()

@@ -5,9 +5,9 @@
 
 use crate::study_common::{assert_same, write_descriptor};
 use bonkers::descriptor::load::load;
-use bonkers::runner::checkpoint::{Phase, Saved, file};
+use bonkers::runner::execute::checkpoint::{Phase, Saved, file};
+use bonkers::runner::execute::run::{fingerprint, run_file, runs_dir};
 use bonkers::runner::plan::plan;
-use bonkers::runner::run::{fingerprint, run_file, runs_dir};
 use bonkers::runner::store::read_parquet;
 use polars::prelude::DataFrame;
 use std::path::Path;

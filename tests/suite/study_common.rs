@@ -6,10 +6,10 @@ use bonkers::descriptor::errors::StudyError;
 use bonkers::descriptor::load::parse;
 use bonkers::model::run_output::{Histogram, RunOutput, Series};
 use bonkers::model::run_spec::RunSpec;
+use bonkers::runner::execute::progress::ProgressMode;
+use bonkers::runner::execute::run::SimulateFn;
 use bonkers::runner::pipeline::{StudyOptions, StudyOutcome, run_study};
 use bonkers::runner::plan::plan;
-use bonkers::runner::progress::ProgressMode;
-use bonkers::runner::run::SimulateFn;
 use bonkers::runner::store::read_parquet;
 use polars::prelude::DataFrame;
 use std::path::{Path, PathBuf};
@@ -170,7 +170,12 @@ pub fn ensemble(text: &str) -> Vec<(RunSpec, RunOutput)> {
     let (a, b) = specs.split_at(specs.len() / 2);
     let run = |part: &[RunSpec]| -> Vec<(RunSpec, RunOutput)> {
         part.iter()
-            .map(|r| (r.clone(), bonkers::runner::simulate::run(r).expect("run")))
+            .map(|r| {
+                (
+                    r.clone(),
+                    bonkers::runner::execute::simulate::run(r).expect("run"),
+                )
+            })
             .collect()
     };
     std::thread::scope(|s| {

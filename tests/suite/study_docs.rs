@@ -59,7 +59,7 @@ fn the_documented_example_runs() {
     let outcome = run_study(
         &file,
         &options,
-        &bonkers::runner::simulate::run,
+        &bonkers::runner::execute::simulate::run,
         &AtomicBool::new(false),
     )
     .unwrap();

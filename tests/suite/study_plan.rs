@@ -4,7 +4,7 @@ use crate::study_common::PISTON;
 use bonkers::descriptor::load::{apply_overrides, parse};
 use bonkers::descriptor::sweep::{count, expand_values};
 use bonkers::runner::plan::plan;
-use bonkers::runner::seeds::run_seed;
+use bonkers::runner::plan::seeds::run_seed;
 use std::collections::HashSet;
 
 fn with_sweep(sweep: &str) -> String {

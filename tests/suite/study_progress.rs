@@ -1,6 +1,6 @@
 //! Plain progress lines (logs, CI): runs done, collision rate, failures, ETA.
 
-use bonkers::runner::progress::{human_duration, plain_line};
+use bonkers::runner::execute::progress::{human_duration, plain_line};
 use std::time::Duration;
 
 #[test]

@@ -58,7 +58,7 @@ fn every_run_writes_exactly_what_its_studies_declare() {
         let outcome = run_study(
             &file,
             &options,
-            &bonkers::runner::simulate::run,
+            &bonkers::runner::execute::simulate::run,
             &AtomicBool::new(false),
         )
         .unwrap();

@@ -6,9 +6,9 @@ use crate::study_common::{
 };
 use bonkers::descriptor::errors::StudyError;
 use bonkers::descriptor::load::parse;
+use bonkers::runner::execute::run::run_file;
 use bonkers::runner::pipeline::run_study;
 use bonkers::runner::plan::plan;
-use bonkers::runner::run::run_file;
 use bonkers::runner::store::read_parquet;
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
@@ -230,7 +230,7 @@ fn failing_and_panicking_runs_are_recorded_and_the_rest_go_on() {
 #[test]
 fn nan_and_infinite_results_survive_the_run_files() {
     use bonkers::model::run_output::RunOutput;
-    use bonkers::runner::record::RunRecord;
+    use bonkers::runner::store::record::RunRecord;
     let record = RunRecord {
         run_id: 1,
         fingerprint: "x".into(),
@@ -354,7 +354,7 @@ fn a_second_study_on_the_same_out_dir_fails_clearly() {
     let file = write_descriptor(dir.path(), PISTON);
     let out = dir.path().join("out");
     std::fs::create_dir_all(&out).unwrap();
-    let held = bonkers::runner::lock::OutLock::acquire(&out).unwrap();
+    let held = bonkers::runner::store::lock::OutLock::acquire(&out).unwrap();
     let err = run_into(&file, &out, 2, &fake).unwrap_err();
     assert_eq!(err.exit_code(), 1);
     let msg = err.to_string();

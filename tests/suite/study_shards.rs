@@ -6,10 +6,10 @@
 
 use crate::study_common::{PISTON, assert_same, fake, run_options, write_descriptor};
 use bonkers::model::run_spec::RunSpec;
-use bonkers::runner::lock::OutLock;
+use bonkers::runner::cluster::shard::Shard;
+use bonkers::runner::execute::run::run_file;
 use bonkers::runner::pipeline::{Slice, run_slice};
-use bonkers::runner::run::run_file;
-use bonkers::runner::shard::Shard;
+use bonkers::runner::store::lock::OutLock;
 use bonkers::runner::store::read_parquet;
 use polars::prelude::DataFrame;
 use std::collections::HashMap;

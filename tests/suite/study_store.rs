@@ -40,7 +40,7 @@ fn parquet_round_trip_keeps_types_values_and_nulls() {
 #[test]
 fn clashing_result_names_get_distinct_deterministic_columns() {
     use bonkers::model::run_output::RunOutput;
-    use bonkers::runner::record::RunRecord;
+    use bonkers::runner::store::record::RunRecord;
     use bonkers::runner::store::write_tables;
     let text = std::fs::read_to_string(concat!(
         env!("CARGO_MANIFEST_DIR"),

@@ -31,7 +31,7 @@ fn a_hot_wall_heats_a_cold_gas_and_hard_walls_do_not() {
     let runs = plan(&parse("heat.toml", COLD_GAS_HOT_WALL).unwrap()).unwrap();
     let outputs: Vec<_> = runs
         .iter()
-        .map(|r| bonkers::runner::simulate::run(r).unwrap())
+        .map(|r| bonkers::runner::execute::simulate::run(r).unwrap())
         .collect();
     for o in &outputs {
         // Elastic walls: exactly no energy, every hit.

@@ -28,9 +28,9 @@
 
 use crate::descriptor::errors::DescriptorError;
 use crate::files::is_temporary;
-use crate::runner::lock::LOCK_FILE;
-use crate::runner::origin::ORIGIN_FILE;
-use crate::runner::publish::{self, CURRENT, MANIFEST, STAGING_PREFIX};
+use crate::runner::plan::origin::ORIGIN_FILE;
+use crate::runner::store::lock::LOCK_FILE;
+use crate::runner::store::publish::{self, CURRENT, MANIFEST, STAGING_PREFIX};
 use anyhow::Context;
 use std::fs::{File, OpenOptions};
 use std::io::Read;

@@ -19,10 +19,10 @@ use crate::model::report::ReportSection;
 use crate::model::run_spec::RunSpec;
 use crate::model::summary::SummaryRow;
 use crate::report::ReportMeta;
-use crate::runner::manifest::{Manifest, RunCounts, rfc3339, version};
-use crate::runner::publish::{self, Staging};
-use crate::runner::run::{Stored, fingerprint, read_record};
+use crate::runner::execute::run::{Stored, fingerprint, read_record};
 use crate::runner::store;
+use crate::runner::store::manifest::{Manifest, RunCounts, rfc3339, version};
+use crate::runner::store::publish::{self, Staging};
 use crate::stats::ensemble::Runs;
 use anyhow::Context;
 use std::fmt;
@@ -259,7 +259,9 @@ pub fn collect(
     invocation: &Invocation,
 ) -> Result<Collected, StudyError> {
     let planned = specs.len();
-    let estimated_seconds: f64 = crate::runner::shard::estimated_seconds(&specs).iter().sum();
+    let estimated_seconds: f64 = crate::runner::cluster::shard::estimated_seconds(&specs)
+        .iter()
+        .sum();
     let Streamed {
         staged,
         runs,
@@ -467,7 +469,7 @@ fn film_run(runs: &Runs, movie: &MovieSpec, dir: &Path) -> anyhow::Result<Option
     };
     // The movie films its run again: twice the run's events is room enough.
     let budget = output.events.saturating_mul(2).saturating_add(1_000_000);
-    let film = super::movie::film(spec, movie, budget)
+    let film = crate::runner::execute::movie::film(spec, movie, budget)
         .with_context(|| format!("filming run {} for the movie", spec.run_id))?;
     write_atomic(
         &dir.join(MOVIE_FILE),

@@ -4,11 +4,11 @@
 //! done runs showed), shards running now, and what to submit again.
 
 use crate::model::run_spec::RunSpec;
-use crate::runner::collect::RunCommand;
-use crate::runner::lock::holder;
-use crate::runner::run::{Stored, fingerprint, read_record};
-use crate::runner::shard;
-use crate::runner::slurm;
+use crate::runner::cluster::shard;
+use crate::runner::cluster::slurm;
+use crate::runner::execute::run::{Stored, fingerprint, read_record};
+use crate::runner::store::collect::RunCommand;
+use crate::runner::store::lock::holder;
 use std::fmt::Write as _;
 use std::path::Path;
 

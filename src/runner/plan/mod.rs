@@ -4,6 +4,12 @@
 //! descriptor, and points share the base's long lists (`descriptor::point`),
 //! so planning is linear in the plan's size.
 
+pub mod confirm;
+pub mod error_bars;
+pub mod estimate;
+pub mod origin;
+pub mod seeds;
+
 use crate::descriptor::errors::DescriptorError;
 use crate::descriptor::load::{Loaded, show};
 use crate::descriptor::point::{PointBase, PointError};
@@ -11,7 +17,7 @@ use crate::descriptor::sweep::{HARD_LIMIT, Numbers, count, point_text, points};
 use crate::descriptor::validate;
 use crate::model::descriptor::Descriptor;
 use crate::model::run_spec::RunSpec;
-use crate::runner::seeds::{point_key, run_seed};
+use crate::runner::plan::seeds::{point_key, run_seed};
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 

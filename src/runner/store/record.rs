@@ -20,7 +20,7 @@ use xxhash_rust::xxh3::xxh3_64;
 #[derive(Debug, Clone, PartialEq)]
 pub struct RunRecord {
     pub run_id: u64,
-    /// Hash of what the run did (see `runner::fingerprint`): a saved run is
+    /// Hash of what the run did (see `execute::run::fingerprint`): a saved run is
     /// reused only if this plan would run exactly the same.
     pub fingerprint: String,
     /// `"ok"` or `"failed: <message>"`.

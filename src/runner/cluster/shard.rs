@@ -6,7 +6,7 @@
 //! computes the same one without talking to the others.
 
 use crate::model::run_spec::RunSpec;
-use crate::runner::estimate;
+use crate::runner::plan::estimate;
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 use std::fmt;

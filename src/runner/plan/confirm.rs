@@ -11,8 +11,8 @@ use crate::descriptor::locate;
 use crate::descriptor::validate::MAX_SAMPLES;
 use crate::model::problem::compact;
 use crate::model::run_spec::RunSpec;
-use crate::runner::estimate::{self, COLLISIONS_PER_SECOND, RunCost};
-use crate::runner::progress::human_duration;
+use crate::runner::execute::progress::human_duration;
+use crate::runner::plan::estimate::{self, COLLISIONS_PER_SECOND, RunCost};
 
 /// Events (pair collisions, wall hits, renewals) one run may be expected to
 /// take: about ten years on one thread at the fastest nominal rate, and a

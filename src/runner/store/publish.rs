@@ -35,7 +35,7 @@
 //! publishing makes (k = 0, 1, ...).
 
 use crate::files::{is_temporary, sync_dir, temp_name};
-use crate::runner::outdir::{SMALL_LIMIT, open_own, read_own_text};
+use crate::runner::store::outdir::{SMALL_LIMIT, open_own, read_own_text};
 use anyhow::{Context, bail};
 use std::fs::{File, OpenOptions, TryLockError};
 use std::io::Write;

@@ -118,7 +118,7 @@ impl Saved {
             o.extend(x.to_bits().to_le_bytes());
         }
         bytes(&mut o, &self.engine);
-        let sum = crate::runner::seeds::fnv1a(&o);
+        let sum = crate::runner::plan::seeds::fnv1a(&o);
         o.extend(sum.to_le_bytes());
         o
     }
@@ -128,7 +128,7 @@ impl Saved {
         let (body, sum) = data
             .split_last_chunk::<8>()
             .ok_or("the checkpoint is empty")?;
-        if crate::runner::seeds::fnv1a(body) != u64::from_le_bytes(*sum) {
+        if crate::runner::plan::seeds::fnv1a(body) != u64::from_le_bytes(*sum) {
             return Err("the checkpoint is damaged (checksum)".into());
         }
         let mut r = Reader { data: body, at: 0 };
@@ -209,8 +209,8 @@ impl<'a> Reader<'a> {
 /// The checkpoint at `place`, if there is one this run can continue: a
 /// regular file (a link is not followed, a device or pipe not read).
 pub fn read(place: &Place) -> Option<Saved> {
-    let limit = crate::runner::outdir::CHECKPOINT_LIMIT;
-    let data = crate::runner::outdir::read_own(&place.path, limit).ok()?;
+    let limit = crate::runner::store::outdir::CHECKPOINT_LIMIT;
+    let data = crate::runner::store::outdir::read_own(&place.path, limit).ok()?;
     Saved::decode(&data, &place.fingerprint).ok()
 }
 

@@ -15,8 +15,8 @@ use crate::model::dimension::{ForDimension, in_dimension};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::observe::{self, Context, ObserverSet};
-use crate::runner::checkpoint::{self, Phase, Place, Saved};
-use crate::runner::cpu_time::thread_cpu_seconds;
+use crate::runner::execute::checkpoint::{self, Phase, Place, Saved};
+use crate::runner::execute::cpu_time::thread_cpu_seconds;
 use crate::scene;
 use crate::studies::{self, Start};
 use anyhow::{Context as _, anyhow, bail};
@@ -460,7 +460,7 @@ fn simulate<const D: usize>(
 /// more, so that a run whose pairs meet far more rarely than expected (or
 /// never: two disks gliding side by side) fails instead of running forever.
 fn event_budget(d: &crate::model::descriptor::Descriptor, left: u64) -> u64 {
-    let per_collision = crate::runner::estimate::run_cost(d)
+    let per_collision = crate::runner::plan::estimate::run_cost(d)
         .map(|c| c.event_rate / c.rate)
         .filter(|r| r.is_finite())
         .unwrap_or(1.0)

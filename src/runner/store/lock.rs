@@ -11,7 +11,7 @@
 //! file races with a process about to lock it. flock-style locks also work
 //! on NFS and Lustre (Linux emulates them with POSIX locks there).
 
-use crate::runner::outdir::open_own;
+use crate::runner::store::outdir::open_own;
 use anyhow::{Context, anyhow, bail};
 use std::fs::{File, OpenOptions, TryLockError};
 use std::io::{Read, Seek, Write};

@@ -2,13 +2,13 @@
 //! are deterministic, so this is the run as it happened: the same scene, the
 //! same engine, positions read at exact frame times.
 
-use super::simulate::start;
 use crate::engine::{Chain, NeighbourList, Neighbourhood, Simulation, Stop};
 use crate::model::dimension::{ForDimension, in_dimension};
 use crate::model::movie::{Film, MovieSpec};
 use crate::model::run_spec::RunSpec;
 use crate::model::scene::SceneSpec;
 use crate::observe::film::Filming;
+use crate::runner::execute::simulate::start;
 use crate::scene;
 use anyhow::{Context, anyhow, bail};
 

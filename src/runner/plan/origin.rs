@@ -6,45 +6,25 @@
 
 use crate::descriptor::errors::{DescriptorError, StudyError};
 use crate::descriptor::load::{self, Loaded};
-use crate::runner::outdir;
+use crate::runner::store::outdir;
 use anyhow::{Context, anyhow};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
 pub const ORIGIN_FILE: &str = ".study.json";
 
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct Origin {
-    /// The descriptor file, absolute (jobs may start in another folder).
-    pub file: PathBuf,
-    /// Its text when the runs were planned.
-    pub text: String,
+/// How the command line plans a descriptor: `--quick`, `--replicas N`
+/// and `--yes` (plans too large or costly to start by accident).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+pub struct Flags {
     pub quick: bool,
     pub replicas: Option<u32>,
     pub yes: bool,
 }
 
-impl Origin {
-    pub fn new(
-        file: &Path,
-        loaded: &Loaded,
-        quick: bool,
-        replicas: Option<u32>,
-        yes: bool,
-    ) -> Self {
-        Origin {
-            file: std::path::absolute(file).unwrap_or_else(|_| file.to_path_buf()),
-            text: loaded.text.clone(),
-            quick,
-            replicas,
-            yes,
-        }
-    }
-
-    /// The descriptor as planned: the saved text with `--quick` and
-    /// `--replicas` applied, as `pipeline::prepare` applies them.
-    pub fn loaded(&self) -> Result<Loaded, DescriptorError> {
-        let mut loaded = load::parse(&self.file.display().to_string(), &self.text)?;
+impl Flags {
+    /// `loaded` with `--quick` and then `--replicas` applied.
+    pub fn apply(&self, mut loaded: Loaded) -> Result<Loaded, DescriptorError> {
         if self.quick {
             loaded = load::quick(&loaded)?;
         }
@@ -52,6 +32,47 @@ impl Origin {
             loaded = load::with_replicas(&loaded, n)?;
         }
         Ok(loaded)
+    }
+
+    /// The flags as the command line takes them (" --quick --replicas 2").
+    pub fn text(&self) -> String {
+        let mut text = String::new();
+        if self.quick {
+            text += " --quick";
+        }
+        if let Some(n) = self.replicas {
+            text += &format!(" --replicas {n}");
+        }
+        if self.yes {
+            text += " --yes";
+        }
+        text
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Origin {
+    /// The descriptor file, absolute (jobs may start in another folder).
+    pub file: PathBuf,
+    /// Its text when the runs were planned.
+    pub text: String,
+    #[serde(flatten)]
+    pub flags: Flags,
+}
+
+impl Origin {
+    pub fn new(file: &Path, loaded: &Loaded, flags: Flags) -> Self {
+        Origin {
+            file: std::path::absolute(file).unwrap_or_else(|_| file.to_path_buf()),
+            text: loaded.text.clone(),
+            flags,
+        }
+    }
+
+    /// The descriptor as planned: the saved text with its flags applied.
+    pub fn loaded(&self) -> Result<Loaded, DescriptorError> {
+        let loaded = load::parse(&self.file.display().to_string(), &self.text)?;
+        self.flags.apply(loaded)
     }
 }
 

@@ -9,8 +9,9 @@
 //! script again (or only those tasks, `sbatch --array=3,7`) continues them.
 
 use crate::descriptor::errors::{DescriptorError, StudyError};
+use crate::runner::cluster::script_text;
 use crate::runner::pipeline::shell_word;
-use crate::runner::script_text;
+use crate::runner::plan::origin::Flags;
 use anyhow::{Context, bail};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -24,9 +25,7 @@ pub struct SlurmJob {
     pub file: PathBuf,
     pub out: PathBuf,
     /// The flags that set the plan.
-    pub quick: bool,
-    pub replicas: Option<u32>,
-    pub yes: bool,
+    pub flags: Flags,
     /// Job name (the study's name).
     pub name: String,
     pub shards: u32,
@@ -52,8 +51,8 @@ pub fn collect_script(out: &Path) -> PathBuf {
 
 /// The number of shards of the array script written for `out`, if any.
 pub fn array_shards(out: &Path) -> Option<u32> {
-    let limit = crate::runner::outdir::SMALL_LIMIT;
-    let text = crate::runner::outdir::read_own_text(&shards_script(out), limit).ok()?;
+    let limit = crate::runner::store::outdir::SMALL_LIMIT;
+    let text = crate::runner::store::outdir::read_own_text(&shards_script(out), limit).ok()?;
     text.lines()
         .find_map(|l| l.strip_prefix("#SBATCH --array=1-"))
         .and_then(|n| n.trim().parse().ok())
@@ -99,21 +98,6 @@ pub fn check_flags(
 }
 
 impl SlurmJob {
-    /// The flags that set the plan, as `study run` and `study collect` take them.
-    fn plan_flags(&self) -> String {
-        let mut flags = String::new();
-        if self.quick {
-            flags += " --quick";
-        }
-        if let Some(n) = self.replicas {
-            flags += &format!(" --replicas {n}");
-        }
-        if self.yes {
-            flags += " --yes";
-        }
-        flags
-    }
-
     /// Every user string of the job, checked, as the scripts write it.
     fn text(&self) -> Result<Text, DescriptorError> {
         check_flags(
@@ -155,7 +139,7 @@ impl SlurmJob {
              #SBATCH --job-name={}\n\
              #SBATCH --array=1-{}\n\
              #SBATCH --cpus-per-task={}\n",
-            crate::runner::manifest::version(),
+            crate::runner::store::manifest::version(),
             t.file,
             t.name,
             self.shards,
@@ -183,7 +167,7 @@ impl SlurmJob {
             study = t.study,
             file = t.file,
             out = t.out,
-            flags = self.plan_flags(),
+            flags = self.flags.text(),
         );
         Ok(s)
     }

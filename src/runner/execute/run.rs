@@ -11,12 +11,12 @@
 
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
-use crate::runner::checkpoint::{self, Place};
-use crate::runner::cpu_time::thread_cpu_seconds;
-use crate::runner::outdir::{self, Unusable, remove_if_present};
-use crate::runner::progress::{Progress, ProgressMode};
-pub use crate::runner::record::RunRecord;
-use crate::runner::seeds::fnv1a;
+use crate::runner::execute::checkpoint::{self, Place};
+use crate::runner::execute::cpu_time::thread_cpu_seconds;
+use crate::runner::execute::progress::{Progress, ProgressMode};
+use crate::runner::plan::seeds::fnv1a;
+use crate::runner::store::outdir::{self, Unusable, remove_if_present};
+pub use crate::runner::store::record::RunRecord;
 use anyhow::{Context, bail};
 use rayon::prelude::*;
 use std::collections::HashSet;
@@ -125,7 +125,7 @@ pub fn fingerprint(spec: &RunSpec) -> String {
     }
     let key = format!(
         "{}|{}|{}|{run}",
-        crate::runner::manifest::version(),
+        crate::runner::store::manifest::version(),
         spec.seed,
         spec.replica
     );

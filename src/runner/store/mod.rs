@@ -1,11 +1,21 @@
-//! Tidy Parquet tables of a study (polars), each written to a temporary file
-//! and renamed, so a reader never sees half a table.
+//! A study on disk: the output folder and its lock, run records, the
+//! manifest, collecting and publishing a report, and (here) the tidy Parquet
+//! tables (polars), each written to a temporary file and renamed, so a
+//! reader never sees half a table.
+
+pub mod collect;
+pub mod lock;
+pub mod manifest;
+pub mod outdir;
+pub mod publish;
+pub mod record;
+pub mod status;
 
 use crate::files::write_via_temp;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::model::summary::SummaryRow;
-use crate::runner::record::RunRecord;
+use crate::runner::store::record::RunRecord;
 use anyhow::Context;
 use polars::prelude::{
     BatchedWriter, Column, CompatLevel, DataFrame, KeyValueMetadata, ParquetReader, ParquetWriter,
