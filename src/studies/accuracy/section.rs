@@ -389,3 +389,31 @@ fn table(scene: &str, all: &[Group]) -> String {
 fn opt(x: f64) -> String {
     if x.is_nan() { "–".into() } else { num(x) }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::stats::fill::unfilled;
+    use crate::stats::named::names;
+
+    /// Every placeholder of the findings and the verdicts is one of the
+    /// keys the section fills.
+    #[test]
+    fn every_placeholder_is_filled() {
+        let keys = [
+            "scene", "naive", "fixed", "first", "last", "worst", "worst_dt", "clean", "drift",
+            "what", "dt", "error", "order", "exact", "cpu", "p", "verdict", "name", "from", "to",
+            "lo", "hi", "model",
+        ];
+        let values = keys.map(|k| (k, "x".to_string()));
+        for text in [FINDINGS, super::super::effort::VERDICTS] {
+            for name in names(text) {
+                let filled = fill(named(text, name), &values);
+                assert!(unfilled(&filled).is_empty(), "{filled}");
+            }
+        }
+        for text in [INTRO, COST, METHODS] {
+            assert!(unfilled(text).is_empty());
+        }
+    }
+}
