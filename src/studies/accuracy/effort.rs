@@ -9,9 +9,27 @@
 use super::groups::Group;
 use super::section::{headline, scatter};
 use crate::model::descriptor::Integrator;
+use crate::stats::fill::fill;
 use crate::stats::format::num;
 use crate::stats::line::log_slope;
+use crate::stats::named::named;
 use std::fmt::Write;
+
+const INTRO: &str = include_str!("effort.md");
+/// What the fits of error against effort say, one line per outcome.
+pub const VERDICTS: &str = include_str!("verdicts.md");
+
+/// What an exponent of one run's scatter against its cost says.
+pub fn exponent(p: f64) -> &'static str {
+    let name = if (p + 0.5).abs() < 0.15 {
+        "as_replicas"
+    } else if p > -0.35 {
+        "no_gain"
+    } else {
+        "faster"
+    };
+    named(VERDICTS, name)
+}
 
 /// Relative errors the planning table is asked for.
 const TARGETS: [f64; 4] = [0.1, 0.03, 0.01, 0.001];
@@ -70,23 +88,8 @@ fn one(scene: &str, runs: &[&Group]) -> String {
     }
     let points: Vec<(f64, f64)> = runs.iter().map(|g| (g.cpu, scatter(g))).collect();
     if let Some(p) = log_slope(&points, 2) {
-        let verdict = if (p + 0.5).abs() < 0.15 {
-            "as cost^(−1/2): these runs outlast the result's correlation time, so length and replicas buy \
-             error alike"
-                .to_string()
-        } else if p > -0.35 {
-            "more slowly than cost^(−1/2): a longer run does not buy its share of error (the result is \
-             measured over part of the run, or correlated over times near the run length); replicas do"
-                .to_string()
-        } else {
-            "faster than cost^(−1/2) (with few replicas per length the scatter is itself uncertain)"
-                .to_string()
-        };
-        let _ = writeln!(
-            md,
-            "\nAcross run lengths, one run's scatter falls as cost^{}, {verdict}.",
-            num(p)
-        );
+        let values = [("p", num(p)), ("verdict", exponent(p).to_string())];
+        let _ = writeln!(md, "\n{}", fill(named(VERDICTS, "effort_fit"), &values));
     }
     // Plan with the length whose error costs least: n = (σ / X)^2 runs.
     let best = runs
@@ -110,12 +113,3 @@ fn one(scene: &str, runs: &[&Group]) -> String {
     }
     md
 }
-
-const INTRO: &str = "\n### Error against effort: the statistics\n\n\
-The exact engine's only error is statistical, and it is bought with CPU time two ways: more replicas (n runs \
-give σ/√n, exactly cost^(−1/2)) or longer runs (cost^(−1/2) only while a run outlasts the correlation time of \
-what it measures). Each table gives one run's relative scatter σ (standard deviation over independent \
-replicas, relative to the mean) at each run length with its CPU cost c; σ √c is the error one CPU-second \
-buys, constant where length and replicas are worth the same. The planning tables use the length whose σ² c \
-is least: n = (σ / X)² runs (at least 2, for an error bar) of c each. Costs are this machine's, one core; the \
-CPU clock ticks every few milliseconds, so the shortest runs' c is a mean over replicas of coarse readings.\n";

@@ -51,69 +51,54 @@ pub fn scene_of(spec: &RunSpec) -> String {
 pub fn groups(runs: &[&(RunSpec, RunOutput)]) -> Vec<Group> {
     // Bits, so that NaN (no fixed step) is one key.
     let key = |s: &RunSpec| {
-        let dt = s.descriptor.run.dt.unwrap_or(f64::NAN);
-        let duration = s.descriptor.run.duration.unwrap_or(f64::NAN);
+        let run = &s.descriptor.run;
+        let dt = run.dt.unwrap_or(f64::NAN);
+        let duration = run.duration.unwrap_or(f64::NAN);
         (
             scene_of(s),
-            s.descriptor.run.integrator,
+            run.integrator,
             dt.to_bits(),
             duration.to_bits(),
         )
     };
-    first_seen(runs.iter().copied(), |a, b| key(&a.0) == key(&b.0))
-        .into_iter()
-        .map(|rs| {
-            let (first, _) = rs[0];
-            let members: Vec<&RunOutput> = rs.iter().map(|(_, o)| o).collect();
-            let dt = first.descriptor.run.dt.unwrap_or(f64::NAN);
-            let mut g = group(
-                scene_of(first),
-                first.descriptor.run.integrator,
-                dt,
-                &members,
-            );
-            g.duration = first.descriptor.run.duration.unwrap_or(f64::NAN);
-            g.piston = crate::scene::resolve(&first.descriptor.scene)
-                .is_ok_and(|scene| scene.piston.is_some());
-            g
-        })
+    (first_seen(runs.iter().copied(), |a, b| key(&a.0) == key(&b.0)).iter())
+        .map(|rs| group(rs))
         .collect()
 }
 
-fn group(scene: String, integrator: Integrator, dt: f64, runs: &[&RunOutput]) -> Group {
+fn group(rs: &[&(RunSpec, RunOutput)]) -> Group {
+    let (first, _) = rs[0];
+    let run = &first.descriptor.run;
+    let runs: Vec<&RunOutput> = rs.iter().map(|(_, o)| o).collect();
     let values = |name: &str| -> Vec<f64> {
-        runs.iter()
+        (runs.iter())
             .filter_map(|o| o.scalar(name))
             .filter(|v| v.is_finite())
             .collect()
     };
-    let mean = |v: &[f64]| {
-        if v.is_empty() {
-            f64::NAN
-        } else {
-            v.iter().sum::<f64>() / v.len() as f64
-        }
-    };
-    let max = |v: &[f64]| v.iter().copied().fold(f64::NAN, f64::max);
+    let stats = |name: &str| Stats::of(&values(name));
+    let max = |name: &str| values(name).into_iter().fold(f64::NAN, f64::max);
     let collisions: u64 = runs.iter().map(|o| o.collisions).sum();
     let repeats: f64 = values("repeat_collisions").iter().sum();
+    let cpu: Vec<f64> = runs.iter().map(|o| o.cpu_seconds).collect();
     Group {
-        scene,
-        integrator,
-        dt,
-        duration: f64::NAN,
-        piston: false,
+        scene: scene_of(first),
+        integrator: run.integrator,
+        dt: run.dt.unwrap_or(f64::NAN),
+        duration: run.duration.unwrap_or(f64::NAN),
+        // A run with a piston records its frequency (NaN if unmeasured).
+        piston: runs.iter().any(|o| o.scalar("piston_frequency").is_some()),
         runs: runs.len(),
-        pressure: Stats::of(&values("beta_pressure")),
-        collision_rate: Stats::of(&values("collision_rate")),
-        frequency: Stats::of(&values("piston_frequency")),
-        energy_drift: mean(&values("energy_drift")),
-        depth_max: max(&values("overlap_depth_max")),
-        depth_mean: mean(&values("overlap_depth_mean")),
-        longest: max(&values("overlap_steps_max")),
-        stuck: mean(&values("stuck_pairs")),
+        pressure: stats("beta_pressure"),
+        collision_rate: stats("collision_rate"),
+        frequency: stats("piston_frequency"),
+        energy_drift: stats("energy_drift").mean,
+        depth_max: max("overlap_depth_max"),
+        depth_mean: stats("overlap_depth_mean").mean,
+        longest: max("overlap_steps_max"),
+        stuck: stats("stuck_pairs").mean,
         repeat_share: repeats / (collisions.max(1) as f64),
-        cpu: mean(&runs.iter().map(|o| o.cpu_seconds).collect::<Vec<_>>()),
+        cpu: Stats::of(&cpu).mean,
     }
 }
 

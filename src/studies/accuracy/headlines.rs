@@ -6,14 +6,20 @@
 //! groups of k replicas; both fitted against cost; the study's error model
 //! (`Study::error_model`) beside what was measured; and a planning table.
 
+use super::effort::{VERDICTS, exponent};
 use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::stats::error_model::{ErrorModel, scatter_uncertainty, scatter_uncertainty_of};
+use crate::stats::fill::fill;
 use crate::stats::format::{num, pm};
+use crate::stats::groups::first_seen;
 use crate::stats::line::{line, log_slope};
-use crate::stats::summary::Stats;
+use crate::stats::named::named;
+use crate::stats::summary::{Stats, scalar};
 use std::fmt::Write;
+
+const INTRO: &str = include_str!("headlines.md");
 
 /// The runs of one headline result at one run length.
 pub struct Length<'a> {
@@ -57,78 +63,74 @@ impl Length<'_> {
     }
 }
 
+/// The study other than this one with an error model for a run's
+/// descriptor, and the model.
+fn model_of(spec: &RunSpec) -> Option<(&'static str, ErrorModel)> {
+    (crate::studies::error_models(&spec.descriptor).into_iter())
+        .find(|(name, _)| *name != "accuracy")
+}
+
 /// Whether a run belongs to a headline case: its descriptor names a study
 /// other than this one that has an error model for it.
 pub fn is_headline(spec: &RunSpec) -> bool {
-    crate::studies::error_models(&spec.descriptor)
-        .iter()
-        .any(|(name, _)| *name != "accuracy")
+    model_of(spec).is_some()
 }
 
-/// The headline runs grouped by (study, run length), in plan order.
+/// The headline runs grouped by (study, scene, run length), in plan order.
 pub fn lengths<'a>(runs: &[&'a (RunSpec, RunOutput)]) -> Vec<Length<'a>> {
-    let mut out: Vec<Length> = Vec::new();
-    for &(spec, o) in runs {
-        let Some((study, model)) = crate::studies::error_models(&spec.descriptor)
-            .into_iter()
-            .find(|(name, _)| *name != "accuracy")
-        else {
-            continue;
-        };
+    let keyed = runs.iter().filter_map(|&(spec, o)| {
+        let (study, model) = model_of(spec)?;
         let duration = spec.descriptor.run.duration.unwrap_or(f64::NAN);
-        let scene = format!("{:?}", spec.descriptor.scene);
-        let at = out.iter().position(|l| {
-            l.study == study && l.scene == scene && l.duration.to_bits() == duration.to_bits()
-        });
-        let l = match at {
-            Some(i) => &mut out[i],
-            None => {
-                let case = spec.case.clone().unwrap_or_else(|| study.to_string());
-                // "headline-piston-m100-n5-300" -> "m100-n5".
-                let name = case
-                    .trim_start_matches("headline-")
-                    .trim_start_matches(study)
-                    .trim_start_matches('-')
-                    .rsplit_once('-')
-                    .map_or(String::new(), |(a, _)| a.to_string());
-                out.push(Length {
-                    study,
-                    name,
-                    scene,
-                    model,
-                    duration,
-                    values: Vec::new(),
-                    runs: Vec::new(),
-                    cpu: 0.0,
-                });
-                out.last_mut().expect("just pushed")
-            }
-        };
-        if let Some(v) = o.scalar(l.model.result).filter(|v| v.is_finite()) {
-            l.values.push(v);
-        }
-        l.runs.push(o);
+        let key = (
+            study,
+            format!("{:?}", spec.descriptor.scene),
+            duration.to_bits(),
+        );
+        Some((key, spec, model, o))
+    });
+    let groups = first_seen(keyed, |a, b| a.0 == b.0);
+    groups.into_iter().map(|g| length(&g)).collect()
+}
+
+type Keyed<'a> = (
+    (&'static str, String, u64),
+    &'a RunSpec,
+    ErrorModel,
+    &'a RunOutput,
+);
+
+fn length<'a>(group: &[Keyed<'a>]) -> Length<'a> {
+    let ((study, scene, duration), spec, model, _) = &group[0];
+    let case = spec.case.clone().unwrap_or_else(|| study.to_string());
+    // "headline-piston-m100-n5-300" -> "m100-n5".
+    let name = (case.trim_start_matches("headline-"))
+        .trim_start_matches(study)
+        .trim_start_matches('-')
+        .rsplit_once('-')
+        .map_or(String::new(), |(a, _)| a.to_string());
+    let runs: Vec<&RunOutput> = group.iter().map(|g| g.3).collect();
+    let values = (runs.iter().filter_map(|o| o.scalar(model.result)))
+        .filter(|v| v.is_finite())
+        .collect();
+    let cpu: Vec<f64> = (runs.iter().map(|o| o.cpu_seconds))
+        .filter(|c| c.is_finite())
+        .collect();
+    Length {
+        study,
+        name,
+        scene: scene.clone(),
+        model: model.clone(),
+        duration: f64::from_bits(*duration),
+        values,
+        runs,
+        cpu: cpu.iter().sum::<f64>() / cpu.len().max(1) as f64,
     }
-    for l in &mut out {
-        let cpu: Vec<f64> = l
-            .runs
-            .iter()
-            .map(|o| o.cpu_seconds)
-            .filter(|c| c.is_finite())
-            .collect();
-        l.cpu = cpu.iter().sum::<f64>() / cpu.len().max(1) as f64;
-    }
-    out
 }
 
 /// The studies with headline runs, in plan order.
 fn studies(all: &[Length]) -> Vec<&'static str> {
-    all.iter().fold(Vec::new(), |mut v, l| {
-        if !v.contains(&l.study) {
-            v.push(l.study);
-        }
-        v
-    })
+    let groups = first_seen(all.iter().map(|l| l.study), |a, b| a == b);
+    groups.into_iter().map(|g| g[0]).collect()
 }
 
 /// The groups of one study with at least two values, in plan order.
@@ -171,13 +173,6 @@ pub fn part(runs: &[&(RunSpec, RunOutput)]) -> (String, Option<ChartSpec>) {
         return (String::new(), None);
     }
     let mut md = String::from(INTRO);
-    md.push_str(
-        "\n![Relative standard error of each study's headline result against the CPU seconds spent on it. \
-         Solid markers: the error of the mean of k replicas at the cheapest run length, measured from the spread \
-         of the means of disjoint groups of k (cost: k runs). Faded markers joined by a thin line: one run's \
-         scatter at each run length (cost: one run). Dashed: the study's error model, falling as cost^(−1/2) \
-         with replicas.](accuracy_effort.svg)\n",
-    );
     for study in &names {
         md.push_str(&one(study, &of(&all, study)));
     }
@@ -242,37 +237,25 @@ fn along_length(lengths: &[&Length], model: f64) -> String {
     if pts.len() < 2 {
         return String::new();
     }
-    let name = lengths[0].name.as_str();
+    let mut values = vec![
+        ("name", lengths[0].name.clone()),
+        ("from", num(lengths[0].duration)),
+        ("to", num(lengths[lengths.len() - 1].duration)),
+        ("lo", num(lo.0)),
+        ("hi", num(hi.0)),
+    ];
     if hi.0 < 1.5 * lo.0 {
-        return format!(
-            "\nAcross run lengths ({name}: {} to {}) the CPU time hardly changes ({} to {} s): these runs \
-             cost what building the scene and analysing the run cost, so their length is free and no \
-             exponent can be fitted.\n",
-            num(lengths[0].duration),
-            num(lengths[lengths.len() - 1].duration),
-            num(lo.0),
-            num(hi.0)
-        );
+        return format!("\n{}\n", fill(named(VERDICTS, "length_free"), &values));
     }
     let Some(p) = log_slope(&pts, 2) else {
         return String::new();
     };
-    let verdict = if (p + 0.5).abs() < 0.15 {
-        "as cost^(−1/2): a longer run buys error as replicas do"
-    } else if p > -0.35 {
-        "hardly or not at all: the result is read off part of the run (a transient, or a window of \
-         fixed length), so a longer run costs more and buys nothing; only replicas buy error"
-    } else {
-        "faster than cost^(−1/2) (the scatter of a few replicas is itself uncertain)"
-    };
-    format!(
-        "\nAcross run lengths ({name}: {} to {}) one run's scatter goes as cost^{} (the model: length^{}), \
-         {verdict}.\n",
-        num(lengths[0].duration),
-        num(lengths[lengths.len() - 1].duration),
-        num(p),
-        num(model)
-    )
+    values.extend([
+        ("p", num(p)),
+        ("model", num(model)),
+        ("verdict", exponent(p).to_string()),
+    ]);
+    format!("\n{}\n", fill(named(VERDICTS, "length_fit"), &values))
 }
 
 /// The standard error of k replicas, measured from disjoint groups.
@@ -304,12 +287,8 @@ fn along_replicas(best: &Length) -> String {
         num(best.duration)
     );
     if let Some((p, dp)) = weighted_slope(&pts) {
-        let _ = writeln!(
-            md,
-            "\nFitted against cost along replicas (weighted by each point's uncertainty): exponent {} \
-             (independent replicas: −1/2; the groups share replicas, so the ± is a rough guide).",
-            pm(p, dp)
-        );
+        let fit = fill(named(VERDICTS, "replicas_fit"), &[("p", pm(p, dp))]);
+        let _ = writeln!(md, "\n{fit}");
     }
     md
 }
@@ -370,15 +349,8 @@ fn correlation(study: &str, groups: &[&Length]) -> Option<String> {
     );
     let mut single = true;
     for l in groups {
-        let get = |name: &str| -> Vec<f64> {
-            l.runs
-                .iter()
-                .filter_map(|o| o.scalar(name))
-                .filter(|v| v.is_finite())
-                .collect()
-        };
-        let block = Stats::of(&get("Z_block_stderr"));
-        let time = Stats::of(&get("block_time"));
+        let block = scalar(l.runs.iter().copied(), "Z_block_stderr");
+        let time = scalar(l.runs.iter().copied(), "block_time");
         let sigma = l.stats().std;
         let first = l.runs.iter().find_map(|o| spacing(o));
         single &= time.std == 0.0 && first.is_some_and(|dt| (time.mean - dt).abs() < 1e-9 * dt);
@@ -393,19 +365,17 @@ fn correlation(study: &str, groups: &[&Length]) -> Option<String> {
             num(sigma / block.mean)
         );
     }
-    md.push_str(
-        "\nThe block analysis (Flyvbjerg–Petersen) within each run looks for the block length beyond which \
-         block means of Z's samples are uncorrelated: the pressure's correlation time, rounded up to a \
-         power of two samples. Its error bar for one run should match the scatter between runs (ratio ≈ 1). \
-         The model's c is what correlations between collisions multiply the uncorrelated error by.",
-    );
-    md.push_str(if single {
-        " Here every run settled on blocks of a single sample: Z's samples are already uncorrelated at the \
-         sampling interval, so no correlation time makes the error worse at these densities, and c ≈ 1.\n"
+    let blocks = if single {
+        "blocks_single"
     } else {
-        " Where it chose longer blocks, the pressure stays correlated over them, and the error of a run is \
-         that much larger than its sample count suggests.\n"
-    });
+        "blocks_longer"
+    };
+    let _ = writeln!(
+        md,
+        "\n{} {}",
+        named(VERDICTS, "blocks"),
+        named(VERDICTS, blocks)
+    );
     Some(md)
 }
 
@@ -478,17 +448,3 @@ fn chart(all: &[Length], names: &[&'static str]) -> ChartSpec {
         layers,
     }
 }
-
-const INTRO: &str = "\n### Error against effort: each study's headline result\n\n\
-Every bundled study has one result its report leads with; the `headline-*` cases run small versions of its \
-scene, with its analysis, at a few points and (for one of them) a few run lengths, 32 seeded replicas each. \
-One run's relative scatter σ₁ (standard deviation over replicas over the mean) and its CPU cost c give the \
-error of n replicas, σ₁/√n, at cost n c. Against replicas the error falls as cost^(−1/2) for independent \
-runs; the table below each result measures it from groups of replicas rather than assuming it. Against run \
-length it falls as cost^(−1/2) only for a time average over runs longer than its correlation time; a result \
-read off a transient (a frequency over the first periods, a relaxation or mixing time) gains nothing from a \
-longer run. Each study's error model (its `error.rs`) gives σ₁ from the descriptor before anything runs, \
-and `study validate` prints the error bars it implies; its constants were measured from these cases, so \
-the ratio measured / model checks the model's form where it is not a calibration point, and its constants \
-when the cases are run with other seeds (the tests do). The ± of a scatter comes from the values' own \
-fourth moment: 1/√(2(n−1)) of it for normal values, more for the heavy tails some of these results have.\n";

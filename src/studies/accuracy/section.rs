@@ -8,10 +8,23 @@ use crate::model::descriptor::Integrator;
 use crate::model::report::{Figure, ReportSection};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
+use crate::stats::fill::fill;
 use crate::stats::format::{num, pm};
+use crate::stats::groups::first_seen;
 use crate::stats::line::log_slope;
+use crate::stats::named::named;
 use crate::stats::summary::Stats;
 use std::fmt::Write;
+
+const INTRO: &str = include_str!("intro.md");
+const COST: &str = include_str!("cost.md");
+const FINDINGS: &str = include_str!("findings.md");
+const METHODS: &str = include_str!("methods.md");
+
+/// The finding `name` of findings.md with its numbers.
+fn finding(name: &str, values: &[(&str, String)]) -> String {
+    fill(named(FINDINGS, name), values)
+}
 
 pub fn section(runs: &[(RunSpec, RunOutput)]) -> ReportSection {
     // The other studies' headline cases have a part of their own.
@@ -19,14 +32,11 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> ReportSection {
         .iter()
         .partition(|(s, _)| super::headlines::is_headline(s));
     let all = groups(&own);
-    let scenes: Vec<String> = all.iter().fold(Vec::new(), |mut v, g| {
-        if !v.contains(&g.scene) {
-            v.push(g.scene.clone());
-        }
-        v
-    });
+    let scenes: Vec<String> = (first_seen(all.iter().map(|g| &g.scene), |a, b| a == b))
+        .into_iter()
+        .map(|v| v[0].clone())
+        .collect();
     let mut md = String::from(INTRO);
-    md.push_str("\n### Findings\n\n");
     for line in findings(&all, &scenes) {
         let _ = writeln!(md, "- {line}");
     }
@@ -37,14 +47,7 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> ReportSection {
             file: "accuracy_cost.svg".into(),
             chart,
         });
-        md.push_str(
-            "\n![Relative error of the wall pressure βP (the piston's frequency for the piston scene) \
-             against the CPU seconds of one run. Markers joined by a line: the fixed step, one marker per dt \
-             (largest dt cheapest); its error is its bias against the exact engine's mean, drawn faded at its \
-             upper bound (difference plus two standard errors) where these runs do not resolve it. Dashed lines: \
-             the exact engine, whose only error is statistical: one run's scatter at one run's cost, falling as \
-             cost^(-1/2) with more runs.](accuracy_cost.svg)\n",
-        );
+        md.push_str(COST);
     }
     for scene in &scenes {
         md.push_str(&table(scene, &all));
@@ -121,18 +124,16 @@ fn findings(all: &[Group], scenes: &[String]) -> Vec<String> {
             lines.push(line);
         }
     }
-    let fixed: Vec<&Group> = all
-        .iter()
-        .filter(|g| g.integrator == Integrator::FixedStep)
-        .collect();
-    let drift = fixed.iter().map(|g| g.energy_drift).fold(0.0, f64::max);
-    if !fixed.is_empty() {
-        lines.push(format!(
-            "Energy: the fixed step's bounces are elastic, so it conserves energy to round-off at every \
-             step tried (largest relative drift over a run {}), however wrong its trajectories; \
-             energy conservation says nothing about its accuracy.",
-            num(drift)
-        ));
+    let fixed = all.iter().filter(|g| g.integrator == Integrator::FixedStep);
+    let drift = fixed.clone().map(|g| g.energy_drift).fold(0.0, f64::max);
+    if fixed.count() > 0 {
+        // Round-off over a run's steps stays far below this.
+        let kept = if drift < 1e-9 {
+            "energy_kept"
+        } else {
+            "energy_lost"
+        };
+        lines.push(finding(kept, &[("drift", num(drift))]));
     }
     for scene in scenes {
         // A scene whose runs all start alike (explicit positions and
@@ -145,55 +146,52 @@ fn findings(all: &[Group], scenes: &[String]) -> Vec<String> {
             continue;
         }
         lines.push(bias(scene, reference, &pts));
-        if let Some(line) = budget(scene, reference, &pts, 1.0) {
-            lines.push(line);
-        }
+        lines.extend(budget(scene, reference, &pts, 1.0));
     }
     lines
 }
 
+/// The group with the most stuck pairs.
+fn worst<'a>(groups: &[&'a Group]) -> Option<&'a Group> {
+    (groups.iter().copied()).max_by(|a, b| a.stuck.total_cmp(&b.stuck))
+}
+
 /// At what dt the stepper without the approach check stops sticking.
 fn sticking(scene: &str, naive: &[&Group], fixed: &[&Group]) -> Option<String> {
-    let first = naive.first()?;
-    let last = naive[naive.len() - 1];
+    let (first, last) = (naive.first()?, naive.last()?);
     let stuck = |g: &&Group| g.stuck > 0.0;
-    let clean_below = naive.iter().take_while(|g| !stuck(g)).last();
-    let worst = naive.iter().max_by(|a, b| a.stuck.total_cmp(&b.stuck))?;
-    let naive_text = match (naive.iter().any(stuck), clean_below) {
-        (false, _) => format!(
-            "no pair stuck at any dt from {} to {}",
-            num(first.dt),
-            num(last.dt)
-        ),
-        (true, None) => format!(
-            "pairs stuck at every dt tried, down to {} ({} stuck pairs per run at dt = {})",
-            num(first.dt),
-            num(worst.stuck),
-            num(worst.dt)
-        ),
-        (true, Some(ok)) => format!(
-            "pairs stuck above dt = {} and none at or below it ({} stuck pairs per run at dt = {})",
-            num(ok.dt),
-            num(worst.stuck),
-            num(worst.dt)
-        ),
+    let w = worst(naive)?;
+    let mut values = vec![
+        ("scene", scene.to_string()),
+        ("first", num(first.dt)),
+        ("last", num(last.dt)),
+        ("worst", num(w.stuck)),
+        ("worst_dt", num(w.dt)),
+    ];
+    let clean = naive.iter().take_while(|g| !stuck(g)).last();
+    values.push(("clean", clean.map_or(String::new(), |g| num(g.dt))));
+    let naive_text = match (naive.iter().any(stuck), clean) {
+        (false, _) => "naive_none",
+        (true, None) => "naive_all",
+        (true, Some(_)) => "naive_above",
     };
-    let fixed_worst = fixed.iter().max_by(|a, b| a.stuck.total_cmp(&b.stuck));
-    let fixed_text = if let Some(w) = fixed_worst.filter(|w| w.stuck > 0.0) {
-        let first = fixed.iter().find(|g| g.stuck > 0.0).map_or(w.dt, |g| g.dt);
-        format!(
-            "with it, none below dt = {}, but still up to {} per run (at dt = {}), where overlaps \
-             deeper than a step's travel are pushed back in by third particles",
-            num(first),
-            num(w.stuck),
-            num(w.dt)
-        )
-    } else {
-        "with it, none at any dt".to_string()
+    let naive_text = finding(naive_text, &values);
+    let fixed_text = match worst(fixed).filter(|w| w.stuck > 0.0) {
+        Some(w) => {
+            let first = fixed.iter().find(|g| stuck(g)).map_or(w.dt, |g| g.dt);
+            finding(
+                "fixed_some",
+                &[
+                    ("first", num(first)),
+                    ("worst", num(w.stuck)),
+                    ("worst_dt", num(w.dt)),
+                ],
+            )
+        }
+        None => finding("fixed_none", &[]),
     };
-    Some(format!(
-        "Sticking, {scene}: without the approach check (the seeds' first version) {naive_text}; {fixed_text}."
-    ))
+    values.extend([("naive", naive_text), ("fixed", fixed_text)]);
+    Some(finding("sticking", &values))
 }
 
 /// How the headline error grows with dt, and from which dt it stands out.
@@ -204,28 +202,19 @@ fn bias(scene: &str, reference: &Group, pts: &[&Group]) -> String {
         .filter_map(|g| error(headline(g).1, headline(reference).1).map(|(e, se)| (g.dt, e, se)))
         .collect();
     let seen: Vec<&(f64, f64, f64)> = errs.iter().filter(|(_, e, se)| *e > 3.0 * se).collect();
-    let Some((dt, e, se)) = seen.first() else {
-        return format!(
-            "Bias, {scene}: the fixed step's {what} agrees with the exact engine's within three standard errors \
-             at every dt tried, up to {}: any bias is below the statistics of these runs.",
-            num(pts[pts.len() - 1].dt)
-        );
+    let mut values = vec![("scene", scene.to_string()), ("what", what.to_string())];
+    let Some(&&(dt, e, se)) = seen.first() else {
+        values.push(("last", num(pts[pts.len() - 1].dt)));
+        return finding("bias_none", &values);
     };
-    let order = slope(&seen)
-        .map(|p| format!("; from there it grows as dt^{}", num(p)))
-        .unwrap_or_default();
-    format!(
-        "Bias, {scene}: the fixed step's {what} differs from the exact engine's by more than three standard \
-         errors from dt = {} on ({} %){order}; below, it is within the statistics of these runs.",
-        num(*dt),
-        pm(100.0 * e, 100.0 * se)
-    )
-}
-
-/// Least-squares slope of log error against log dt, over at least 3 points.
-fn slope(pts: &[&(f64, f64, f64)]) -> Option<f64> {
-    let xy: Vec<(f64, f64)> = pts.iter().map(|(dt, e, _)| (*dt, *e)).collect();
-    log_slope(&xy, 3)
+    let growth: Vec<(f64, f64)> = seen.iter().map(|p| (p.0, p.1)).collect();
+    let order = log_slope(&growth, 3).map(|p| format!("; from there it grows as dt^{}", num(p)));
+    values.extend([
+        ("dt", num(dt)),
+        ("error", pm(100.0 * e, 100.0 * se)),
+        ("order", order.unwrap_or_default()),
+    ]);
+    finding("bias", &values)
 }
 
 /// What error `seconds` of CPU buy each way: the exact engine's statistical
@@ -248,15 +237,15 @@ fn budget(scene: &str, reference: &Group, pts: &[&Group], seconds: f64) -> Optio
         return None;
     }
     let (what, _) = headline(reference);
-    Some(format!(
-        "Cost, {scene}: one CPU-second buys the exact engine a {what} within {} % (its statistical \
-         error, from runs of {} s each); the fixed step's best use of it, dt = {}, is within {} % at most \
-         (its bias, bounded by these runs at two standard errors, and its own scatter).",
-        num(100.0 * exact_error),
-        num(reference.cpu),
-        num(best.0),
-        num(100.0 * best.1)
-    ))
+    let values = [
+        ("scene", scene.to_string()),
+        ("what", what.to_string()),
+        ("exact", num(100.0 * exact_error)),
+        ("cpu", num(reference.cpu)),
+        ("dt", num(best.0)),
+        ("fixed", num(100.0 * best.1)),
+    ];
+    Some(finding("cost", &values))
 }
 
 fn cost_chart(all: &[Group], scenes: &[String]) -> ChartSpec {
@@ -401,25 +390,30 @@ fn opt(x: f64) -> String {
     if x.is_nan() { "–".into() } else { num(x) }
 }
 
-const INTRO: &str = "\nThe Imperial project's simulation moves every particle by a fixed step dt, bounces what \
-overlaps a wall, and collides overlapping pairs, only if they approach (its fix for particles that stick \
-together). The exact engine instead finds every collision's time. Both drive the same observers here, on the \
-same scenes, so their results can be compared directly: each fixed step's error is its difference from the \
-exact engine's ensemble, set beside the CPU time it took.\n";
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::stats::fill::unfilled;
+    use crate::stats::named::names;
 
-const METHODS: &str = "\n### How it is measured\n\n\
-Each scene runs with the exact engine (the reference) and with the fixed step at each dt, with and without the \
-approach check, in independent replicas. **Errors** are relative differences of ensemble means, |fixed / exact − 1|, \
-with the standard error of both ensembles combined; an error within about two standard errors is noise, not \
-bias. **Wall pressure** is the momentum the walls receive per unit time and wall length, over each run's own \
-kT = 2K/f (βP: every run draws its own energy, and the pressure follows it); the fixed step reflects a \
-wall overlap at the step's end, so its impulses are right but late. **Collision rate** is pair collisions per unit \
-time: a fixed step misses pairs that cross without overlapping at a step end (both move more than a diameter \
-relative to each other in one step) and makes repeat collisions of a pair still overlapping from the step \
-before. **Overlaps** are measured at step ends, as a fraction of the contact distance (deepest over the runs, \
-mean over every overlap seen); the longest overlap counts the step ends in a row one pair spent overlapping, and \
-a pair is **stuck** once it has overlapped longer than it would take to pass clean through its partner at their \
-relative speed (two contact distances over that speed). **Piston frequency** uses the piston study's estimator (first four full \
-periods). **CPU time** is the thread's CPU time for one run, scene building included. The exact engine's \
-error at equal cost is its statistical error: one run's relative scatter at one run's cost, shrinking as \
-cost^(−1/2) with more runs (or longer ones, as long as they are longer than the correlation time).\n";
+    /// Every placeholder of the findings and the verdicts is one of the
+    /// keys the section fills.
+    #[test]
+    fn every_placeholder_is_filled() {
+        let keys = [
+            "scene", "naive", "fixed", "first", "last", "worst", "worst_dt", "clean", "drift",
+            "what", "dt", "error", "order", "exact", "cpu", "p", "verdict", "name", "from", "to",
+            "lo", "hi", "model",
+        ];
+        let values = keys.map(|k| (k, "x".to_string()));
+        for text in [FINDINGS, super::super::effort::VERDICTS] {
+            for name in names(text) {
+                let filled = fill(named(text, name), &values);
+                assert!(unfilled(&filled).is_empty(), "{filled}");
+            }
+        }
+        for text in [INTRO, COST, METHODS] {
+            assert!(unfilled(text).is_empty());
+        }
+    }
+}

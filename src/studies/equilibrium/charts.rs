@@ -13,6 +13,9 @@ use crate::theory::maxwell::{MaxwellSpeed, normal_pdf};
 
 pub type Runs<'a> = [(&'a Ensemble, &'a RunOutput)];
 
+/// The label of a pooled histogram's markers.
+pub const MEASURED: &str = "measured (mean ± standard error over replicas)";
+
 fn find<'a>(out: &'a RunOutput, name: &str) -> Option<&'a Histogram> {
     out.histograms.iter().find(|h| h.observable == name)
 }
@@ -56,31 +59,38 @@ pub fn pooled(
     Some(Pooled { x, density })
 }
 
+fn means(p: &Pooled) -> Vec<(f64, f64)> {
+    p.x.iter()
+        .zip(&p.density)
+        .map(|(x, s)| (*x, s.mean))
+        .collect()
+}
+
 fn measured(p: &Pooled, i: usize, label: &str) -> Vec<Layer> {
+    let bars = (p.x.iter().zip(&p.density))
+        .map(|(x, s)| (*x, s.mean - s.stderr, s.mean, s.mean + s.stderr))
+        .collect();
     vec![
         Layer::ErrorBars {
-            bars: p
-                .x
-                .iter()
-                .zip(&p.density)
-                .map(|(x, s)| (*x, s.mean - s.stderr, s.mean, s.mean + s.stderr))
-                .collect(),
+            bars,
             paint: colour(i).faded(0.6),
         },
         Layer::Markers {
-            points: p
-                .x
-                .iter()
-                .zip(&p.density)
-                .map(|(x, s)| (*x, s.mean))
-                .collect(),
+            points: means(p),
             paint: colour(i),
             label: Some(label.into()),
         },
     ]
 }
 
-fn curve(f: &dyn Fn(f64) -> f64, lo: f64, hi: f64, i: usize, dashed: bool, label: &str) -> Layer {
+fn curve(
+    f: &dyn Fn(f64) -> f64,
+    lo: f64,
+    hi: f64,
+    i: usize,
+    dashed: bool,
+    label: Option<&str>,
+) -> Layer {
     Layer::Line {
         points: (0..=400)
             .map(|k| lo + (hi - lo) * k as f64 / 400.0)
@@ -89,8 +99,20 @@ fn curve(f: &dyn Fn(f64) -> f64, lo: f64, hi: f64, i: usize, dashed: bool, label
         paint: colour(i),
         width: 2,
         dashed,
-        label: Some(label.into()),
+        label: label.map(Into::into),
     }
+}
+
+/// The unit Gaussian, dashed.
+fn gaussian(lo: f64, hi: f64) -> Layer {
+    curve(
+        &|u| normal_pdf(u, 0.0, 1.0),
+        lo,
+        hi,
+        6,
+        true,
+        Some("Gaussian"),
+    )
 }
 
 fn range(p: &Pooled) -> (f64, f64) {
@@ -137,30 +159,22 @@ pub fn velocity(
         reach: dof.sqrt(),
         dof,
     };
+    let label = format!("exact, f = {dof}");
     layers.push(curve(
         &|u| law.pdf(u),
         span.0,
         span.1,
         6,
         false,
-        &format!("exact, f = {dof}"),
+        Some(&label),
     ));
-    layers.push(curve(
-        &|u| normal_pdf(u, 0.0, 1.0),
-        span.0,
-        span.1,
-        6,
-        true,
-        "Gaussian",
-    ));
-    Some(ChartSpec {
-        title: title.into(),
-        x_label: "(vₓ − V) / √(kT/m)  (V, kT/m: the exact law's centre and variance)".into(),
-        y_label: "probability density".into(),
-        x_log: false,
-        y_log: false,
+    layers.push(gaussian(span.0, span.1));
+    Some(linear(
+        title,
+        "(vₓ − V) / √(kT/m)  (V, kT/m: the exact law's centre and variance)",
+        "probability density",
         layers,
-    })
+    ))
 }
 
 /// Each particle's velocity std (Gaussian fit, mean over replicas) against
@@ -178,17 +192,14 @@ pub fn std_against_mass(title: &str, runs: &Runs) -> Option<ChartSpec> {
             .filter_map(|(_, o)| find(o, &format!("velocity_x.{i}")))
             .map(|h| moments::of(h).std)
             .collect();
-        let masses: Vec<f64> = (runs.iter())
-            .filter_map(|(e, _)| e.balls.iter().find(|b| b.index == i))
+        let ball = |e: &Ensemble| e.ball(i);
+        let masses: Vec<f64> = runs
+            .iter()
+            .filter_map(|(e, _)| ball(e))
             .map(|b| b.mass)
             .collect();
         let exact: Vec<f64> = (runs.iter())
-            .filter_map(|(e, _)| {
-                Some(
-                    e.velocity_law(e.balls.iter().find(|b| b.index == i)?.mass)
-                        .std(),
-                )
-            })
+            .filter_map(|(e, _)| Some(e.velocity_law(ball(e)?.mass).std()))
             .collect();
         let (s, m, x) = (Stats::of(&stds), Stats::of(&masses), Stats::of(&exact));
         if s.n == 0 {
@@ -239,38 +250,19 @@ pub fn positions(title: &str, runs: &Runs) -> Option<ChartSpec> {
         })?;
         let (lo, hi) = range(&p);
         layers.push(Layer::Markers {
-            points: p
-                .x
-                .iter()
-                .zip(&p.density)
-                .map(|(x, s)| (*x, s.mean))
-                .collect(),
+            points: means(&p),
             paint: colour(k),
             label: (k == 0).then(|| "measured (mean over replicas)".into()),
         });
-        let mut c = curve(
-            &|x| law.pdf(x),
-            lo,
-            hi,
-            k,
-            false,
-            "order statistics (exact)",
-        );
-        if let Layer::Line { label, .. } = &mut c
-            && k > 0
-        {
-            *label = None;
-        }
-        layers.push(c);
+        let label = (k == 0).then_some("order statistics (exact)");
+        layers.push(curve(&|x| law.pdf(x), lo, hi, k, false, label));
     }
-    Some(ChartSpec {
-        title: title.into(),
-        x_label: "x [σ]".into(),
-        y_label: "probability density of each rod's x".into(),
-        x_log: false,
-        y_log: false,
+    Some(linear(
+        title,
+        "x [σ]",
+        "probability density of each rod's x",
         layers,
-    })
+    ))
 }
 
 /// sqrt(m) v_x of all particles in units of sqrt(kT), beside the Gaussian.
@@ -279,23 +271,14 @@ pub fn scaled_vx(title: &str, runs: &Runs) -> Option<ChartSpec> {
         (0.0, runs[r].0.kt().sqrt())
     })?;
     let (lo, hi) = range(&p);
-    let mut layers = measured(&p, 0, "measured (mean ± standard error over replicas)");
-    layers.push(curve(
-        &|u| normal_pdf(u, 0.0, 1.0),
-        lo,
-        hi,
-        6,
-        true,
-        "Gaussian",
-    ));
-    Some(ChartSpec {
-        title: title.into(),
-        x_label: "√m vₓ / √(kT), kT = 2E/f".into(),
-        y_label: "probability density".into(),
-        x_log: false,
-        y_log: false,
+    let mut layers = measured(&p, 0, MEASURED);
+    layers.push(gaussian(lo, hi));
+    Some(linear(
+        title,
+        "√m vₓ / √(kT), kT = 2E/f",
+        "probability density",
         layers,
-    })
+    ))
 }
 
 /// sqrt(m)|v| in units of sqrt(kT), beside Maxwell-Boltzmann and the exact law.
@@ -312,96 +295,85 @@ pub fn speed(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let kt = e.kt().sqrt();
     let mass = e.balls.first().map_or(1.0, |b| b.mass);
     let exact = e.speed_law(mass);
-    let mut layers = measured(&p, 0, "measured (mean ± standard error over replicas)");
-    layers.push(curve(&|u| mb.pdf(u), 0.0, hi, 6, true, "Maxwell-Boltzmann"));
-    layers.push(curve(
-        &|u| exact.pdf(u * kt) * kt,
-        0.0,
-        hi,
-        1,
-        false,
-        "exact, finite N",
-    ));
-    Some(ChartSpec {
-        title: title.into(),
-        x_label: "√m |v| / √(kT), kT = 2E/f".into(),
-        y_label: "probability density".into(),
-        x_log: false,
-        y_log: false,
+    let mut layers = measured(&p, 0, MEASURED);
+    let label = Some("Maxwell-Boltzmann");
+    layers.push(curve(&|u| mb.pdf(u), 0.0, hi, 6, true, label));
+    let label = Some("exact, finite N");
+    layers.push(curve(&|u| exact.pdf(u * kt) * kt, 0.0, hi, 1, false, label));
+    Some(linear(
+        title,
+        "√m |v| / √(kT), kT = 2E/f",
+        "probability density",
         layers,
-    })
+    ))
 }
 
 /// The density along x over the mean density (mean over replicas).
 pub fn density(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let e = runs.first()?.0;
-    let hists: Vec<&Histogram> = runs
-        .iter()
-        .filter_map(|(_, o)| find(o, "density_x"))
-        .collect();
-    let first = hists.first()?;
     let mean_n = e.balls.len() as f64 / e.volume;
-    let per: Vec<Vec<f64>> = hists.iter().map(|h| profile(e, h)).collect();
-    let points: Vec<(f64, f64)> = (0..first.lo.len())
-        .map(|b| {
-            let x = 0.5 * (first.lo[b] + first.hi[b]);
-            (
-                x,
-                per.iter().map(|p| p[b]).sum::<f64>() / per.len() as f64 / mean_n,
-            )
-        })
-        .collect();
-    Some(ChartSpec {
-        title: title.into(),
-        x_label: "x [σ]".into(),
-        y_label: "n(x) / mean n".into(),
-        x_log: false,
-        y_log: false,
-        layers: vec![Layer::Line {
-            points,
-            paint: colour(0),
-            width: 2,
-            dashed: false,
-            label: Some(format!("mean over {} replicas", per.len())),
-        }],
-    })
+    let (points, n) = mean_over(runs, "density_x", &|h| profile(e, h), f64::INFINITY)?;
+    let points = points.into_iter().map(|(x, y)| (x, y / mean_n)).collect();
+    let label = format!("mean over {n} replicas");
+    Some(linear(
+        title,
+        "x [σ]",
+        "n(x) / mean n",
+        vec![plain(points, label)],
+    ))
 }
 
 /// g(r), mean over replicas, up to `reach` σ.
 pub fn radial(title: &str, runs: &Runs, reach: f64) -> Option<ChartSpec> {
     let e = runs.first()?.0;
-    let hists: Vec<&Histogram> = runs
-        .iter()
-        .filter_map(|(_, o)| find(o, "pair_distance"))
-        .collect();
+    let g = |h: &Histogram| radial_distribution(e, h);
+    let (points, n) = mean_over(runs, "pair_distance", &g, reach)?;
+    let label = format!("mean over {n} replicas (N(N − 1) normalisation)");
+    Some(linear(title, "r [σ]", "g(r)", vec![plain(points, label)]))
+}
+
+/// The mean over the replicas that have histogram `name` of `per` of it,
+/// at the first one's bin centres up to `reach`, and how many there were.
+fn mean_over(
+    runs: &Runs,
+    name: &str,
+    per: &dyn Fn(&Histogram) -> Vec<f64>,
+    reach: f64,
+) -> Option<(Vec<(f64, f64)>, usize)> {
+    let hists: Vec<&Histogram> = runs.iter().filter_map(|(_, o)| find(o, name)).collect();
     let first = hists.first()?;
-    let per: Vec<Vec<f64>> = hists.iter().map(|h| radial_distribution(e, h)).collect();
-    let points: Vec<(f64, f64)> = (0..first.lo.len())
+    let per: Vec<Vec<f64>> = hists.iter().map(|h| per(h)).collect();
+    let points = (0..first.lo.len())
         .map(|b| {
-            (
-                0.5 * (first.lo[b] + first.hi[b]),
-                per.iter().map(|p| p[b]).sum::<f64>() / per.len() as f64,
-            )
+            let x = 0.5 * (first.lo[b] + first.hi[b]);
+            (x, per.iter().map(|p| p[b]).sum::<f64>() / per.len() as f64)
         })
         .take_while(|(x, _)| *x <= reach)
         .collect();
-    Some(ChartSpec {
+    Some((points, per.len()))
+}
+
+/// A solid line of width 2 in the first colour.
+fn plain(points: Vec<(f64, f64)>, label: String) -> Layer {
+    Layer::Line {
+        points,
+        paint: colour(0),
+        width: 2,
+        dashed: false,
+        label: Some(label),
+    }
+}
+
+/// A chart with linear axes.
+fn linear(title: &str, x_label: &str, y_label: &str, layers: Vec<Layer>) -> ChartSpec {
+    ChartSpec {
         title: title.into(),
-        x_label: "r [σ]".into(),
-        y_label: "g(r)".into(),
+        x_label: x_label.into(),
+        y_label: y_label.into(),
         x_log: false,
         y_log: false,
-        layers: vec![Layer::Line {
-            points,
-            paint: colour(0),
-            width: 2,
-            dashed: false,
-            label: Some(format!(
-                "mean over {} replicas (N(N − 1) normalisation)",
-                per.len()
-            )),
-        }],
-    })
+        layers,
+    }
 }
 
 /// MacKay's scatter plots, from the first replica's stored samples: each
@@ -427,14 +399,7 @@ pub fn scatter(
             label: Some(label.clone()),
         });
     }
-    Some(ChartSpec {
-        title: title.into(),
-        x_label: axes.0.into(),
-        y_label: axes.1.into(),
-        x_log: false,
-        y_log: false,
-        layers,
-    })
+    Some(linear(title, axes.0, axes.1, layers))
 }
 
 /// A series' mean over replicas with a ±1 standard error band, and a
@@ -457,12 +422,5 @@ pub fn settling(
             label: Some(label.into()),
         });
     }
-    ChartSpec {
-        title: title.into(),
-        x_label: "time t".into(),
-        y_label: y_label.into(),
-        x_log: false,
-        y_log: false,
-        layers,
-    }
+    linear(title, "time t", y_label, layers)
 }

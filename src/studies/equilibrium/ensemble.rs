@@ -10,7 +10,7 @@ use crate::scene::{Built, OnBuilt, on_built};
 use crate::theory::microcanonical::{SpeedMarginal, VelocityMarginal};
 use crate::theory::ordered_rods::{self, RodPosition};
 
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct Ensemble {
     pub dimension: usize,
     /// Engine index of each movable ball, with its mass, radius and start x.
@@ -142,6 +142,11 @@ impl Ensemble {
         let radii: Vec<f64> = ranked.iter().map(|b| b.radius).collect();
         let laws = ordered_rods::positions(self.size[0], &radii);
         Some(ranked.into_iter().zip(laws).collect())
+    }
+
+    /// The ball with engine index `index`.
+    pub fn ball(&self, index: usize) -> Option<Ball> {
+        self.balls.iter().copied().find(|b| b.index == index)
     }
 
     pub fn lightest(&self) -> Option<Ball> {

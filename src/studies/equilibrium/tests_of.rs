@@ -100,14 +100,7 @@ pub fn tests_of(runs: &[(&Ensemble, &RunOutput)]) -> Tests {
     };
     for (rank, ball) in first.by_rank().iter().enumerate() {
         let i = ball.index;
-        let mass_of = |r: usize| {
-            runs[r]
-                .0
-                .balls
-                .iter()
-                .find(|b| b.index == i)
-                .map_or(f64::NAN, |b| b.mass)
-        };
+        let mass_of = |r: usize| runs[r].0.ball(i).map_or(f64::NAN, |b| b.mass);
         let exact = |r: usize, a: f64, b: f64| runs[r].0.velocity_law(mass_of(r)).probability(a, b);
         let gaussian = |r: usize, a: f64, b: f64| {
             let law = runs[r].0.velocity_law(mass_of(r));
