@@ -17,7 +17,7 @@ use crate::theory::heat::enskog_factor;
 const TEXT: &str = include_str!("conduct.md");
 
 /// Whether a jump is resolved above zero (z ≥ 4).
-fn resolved(s: &Stats) -> bool {
+fn above_zero(s: &Stats) -> bool {
     z_score(s, 0.0).is_some_and(|z| z >= 4.0)
 }
 
@@ -55,7 +55,7 @@ pub fn part(
 ) -> String {
     let mut rows = String::new();
     let mut jumps = String::new();
-    let mut unresolved = Vec::new();
+    let (mut resolved, mut unresolved) = (Vec::new(), Vec::new());
     let mut pictures = String::new();
     let mut bars = Vec::new();
     for (k, (gas, (hot, cold, _), rs)) in points.iter().enumerate() {
@@ -101,8 +101,9 @@ pub fn part(
             num(cpu),
         ]));
         let (jh, jc) = (rs.stat("jump_hot"), rs.stat("jump_cold"));
-        if !(resolved(&jh) && resolved(&jc)) {
-            unresolved.push(name.clone());
+        match above_zero(&jh) && above_zero(&jc) {
+            true => resolved.push(name.clone()),
+            false => unresolved.push(name.clone()),
         }
         let g = rs.stat("gradient");
         jumps.push_str(&table_row(&[
@@ -119,13 +120,14 @@ pub fn part(
         figures.push(figure);
         pictures.push_str(&text);
     }
-    let jumps_verdict = if unresolved.is_empty() {
-        "falls short of the hot wall's temperature and stays above the cold one's at every point, each jump more than 4 standard errors above zero: the gas next to a wall is not at its temperature.".to_string()
-    } else {
-        format!(
-            "would fall short of the hot wall's temperature and stay above the cold one's if the gas next to a wall were not at its temperature; at {} a jump is not resolved (it is within 4 standard errors of zero, or below it).",
+    let jumps_verdict = match (resolved.is_empty(), unresolved.is_empty()) {
+        (_, true) => "Here it does at every point: each jump is more than 4 standard errors above zero.".into(),
+        (true, false) => "Here no point resolves both jumps: each has one within 4 standard errors of zero, or below it.".into(),
+        (false, false) => format!(
+            "Here both jumps are more than 4 standard errors above zero at {}; at {} one is not resolved (within 4 standard errors of zero, or below it).",
+            resolved.join("; "),
             unresolved.join("; ")
-        )
+        ),
     };
     let conductivity_figure = if bars.is_empty() {
         String::new()
