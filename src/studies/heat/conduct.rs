@@ -4,7 +4,7 @@
 //! centre, and the temperature jumps at the walls.
 
 use super::gas::Gas;
-use crate::model::run_output::Histogram;
+use crate::model::run_output::{Histogram, RunOutput};
 use crate::stats::line::Sums;
 
 /// A run's profile across x: per slab its centre, temperature, density and
@@ -34,6 +34,16 @@ impl Profile {
             p.weight.push(c);
         }
         p
+    }
+
+    /// From a run's `energy_x` histograms; None if it has none.
+    pub fn of_run(gas: &Gas, out: &RunOutput) -> Option<Profile> {
+        let h = |n: &str| out.histograms.iter().find(|h| h.observable == n);
+        Some(Profile::of(
+            gas,
+            h("energy_x.count")?,
+            h("energy_x.energy")?,
+        ))
     }
 }
 
@@ -74,13 +84,9 @@ impl Line {
 
 /// Mean density over the slabs the fit used (the centre's, to second order).
 pub fn centre_density(p: &Profile, length: f64, width: f64) -> f64 {
-    let mid = length / 2.0;
-    let v: Vec<f64> =
-        p.x.iter()
-            .zip(&p.density)
-            .filter(|(x, _)| (**x - mid).abs() <= width * length / 2.0)
-            .map(|(_, n)| *n)
-            .collect();
+    let near = |x: f64| (x - length / 2.0).abs() <= width * length / 2.0;
+    let slabs = p.x.iter().zip(&p.density).filter(|(x, _)| near(**x));
+    let v: Vec<f64> = slabs.map(|(_, n)| *n).collect();
     v.iter().sum::<f64>() / v.len() as f64
 }
 

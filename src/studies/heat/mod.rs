@@ -10,6 +10,8 @@ mod conduct;
 mod gas;
 mod relax;
 mod section;
+mod section_conduct;
+mod section_relax;
 
 use super::options::value;
 use super::{Finished, Study, StudyOption};
@@ -20,10 +22,11 @@ use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
 use crate::model::scene::SceneSpec;
 use crate::stats::ensemble::Runs;
+use crate::stats::late::late_mean;
 use crate::theory::heat::{conductivity_dilute, enskog_factor};
 pub use conduct::{Line, Profile, centre_density};
 pub use gas::{Experiment, Gas};
-pub use relax::{initial_ratio, late, model, passage, temperatures};
+pub use relax::{initial_ratio, model, passage, temperatures};
 
 pub const NAME: &str = "heat";
 
@@ -200,7 +203,7 @@ fn relaxation(d: &Descriptor, gas: &Gas, wall: f64, out: &mut RunOutput) -> Resu
             ("relaxation_time_free", tau_free),
             ("relaxation_ratio_free", tau / tau_free),
             ("initial_rate_ratio", initial_ratio(&t, &temp, &m, window)),
-            ("late_temperature", late(&t, &temp)),
+            ("late_temperature", late_mean(&t, &temp)),
         ]
         .map(|(k, v)| (k.to_string(), v)),
     );
@@ -224,17 +227,9 @@ fn conduction(
     let flux_in = q_hot / (duration * area);
     let flux_out = -q_cold / (duration * area);
     let flux = (flux_in + flux_out) / 2.0;
-    let histogram = |name: &str| {
-        out.histograms
-            .iter()
-            .find(|h| h.observable == name)
-            .ok_or("the heat analysis of a hot and a cold wall needs `histograms = [\"energy_x\"]` in [observe]")
-    };
-    let profile = Profile::of(
-        gas,
-        histogram("energy_x.count")?,
-        histogram("energy_x.energy")?,
-    );
+    let profile = Profile::of_run(gas, out).ok_or(
+        "the heat analysis of a hot and a cold wall needs `histograms = [\"energy_x\"]` in [observe]",
+    )?;
     let length = gas.size[0];
     let width = value(d, NAME, OPTIONS, "fit_width");
     let line = Line::fit(&profile, length, width);

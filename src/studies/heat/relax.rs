@@ -5,9 +5,6 @@
 use super::gas::Gas;
 use crate::theory::heat::WellMixed;
 
-/// Part of the run, at its end, over which the settled temperature is averaged.
-pub const LATE: f64 = 0.5;
-
 /// kT = 2K/(d N) from the kinetic energy series (walls: d N free degrees).
 pub fn temperatures(gas: &Gas, energy: &[f64]) -> Vec<f64> {
     let f = gas.dimension as f64 * gas.particles;
@@ -40,35 +37,16 @@ pub fn model(gas: &Gas, wall: f64, start: f64) -> WellMixed {
     }
 }
 
-/// The first sample at or after `t1`: (its time, its temperature).
-pub fn at(t: &[f64], temp: &[f64], t1: f64) -> Option<(f64, f64)> {
-    let i = t.iter().position(|&x| x >= t1)?;
-    Some((t[i], *temp.get(i)?))
-}
-
 /// Change of T over the first samples up to `t1` over the change the model
 /// predicts there: its first-order term is exact (the start is a uniform
 /// Maxwellian, whatever the density), so this tends to 1 as t1 -> 0.
 pub fn initial_ratio(t: &[f64], temp: &[f64], m: &WellMixed, t1: f64) -> f64 {
-    match (temp.first(), at(t, temp, t1)) {
+    // The first sample at or after t1.
+    let i = t.iter().position(|&x| x >= t1);
+    match (temp.first(), i.and_then(|i| Some((t[i], *temp.get(i)?)))) {
         (Some(&t0), Some((tt, x))) if tt > 0.0 => (x - t0) / (m.temperature(tt) - t0),
         _ => f64::NAN,
     }
-}
-
-/// Mean temperature over the last `LATE` of the run.
-pub fn late(t: &[f64], temp: &[f64]) -> f64 {
-    let (Some(&a), Some(&b)) = (t.first(), t.last()) else {
-        return f64::NAN;
-    };
-    let from = b - LATE * (b - a);
-    let v: Vec<f64> = t
-        .iter()
-        .zip(temp)
-        .filter(|(t, _)| **t >= from)
-        .map(|(_, x)| *x)
-        .collect();
-    v.iter().sum::<f64>() / v.len() as f64
 }
 
 #[cfg(test)]
@@ -85,6 +63,5 @@ mod tests {
         // Heating from 0.5 to 1: excess 1, 0.5, 0.25 again.
         assert!((passage(&t, &[0.5, 0.75, 0.875], 1.0, e) - want).abs() < 1e-12);
         assert!(passage(&t, &[2.0, 1.9, 1.8], 1.0, e).is_nan());
-        assert_eq!(late(&[0.0, 1.0, 2.0, 3.0], &[5.0, 5.0, 1.0, 3.0]), 2.0);
     }
 }

@@ -1,85 +1,131 @@
 //! The mixing study's part of the report: the 1D runs (rods, hot start) and
 //! the 2D runs (two species started apart) each get their own half, from
-//! the runs of the plan grouped by sweep point or case.
+//! the runs of the plan grouped by sweep point or case; and what the two
+//! halves share. The prose is in the Markdown files beside this one.
 
 use super::{section_disks, section_rods};
+use crate::model::chart::{ChartSpec, Layer, Paint};
 use crate::model::report::{Figure, ReportSection};
-use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
 use crate::stats::ensemble::Runs;
+use crate::stats::format::{num, pm};
+use crate::stats::point_runs::{PointRuns, by_point};
 use crate::stats::summary::Stats;
-use std::collections::BTreeMap;
+
+const METHODS: &str = include_str!("methods.md");
 
 /// The runs of one sweep point or case.
-pub struct Point<'a> {
-    pub spec: &'a RunSpec,
-    pub outs: Vec<&'a RunOutput>,
-    /// Every run of the plan, for the point's series means.
-    all: &'a Runs,
+pub type Point<'a> = PointRuns<'a>;
+
+/// How many runs of a point mixed within their length.
+pub fn mixed(p: &Point) -> usize {
+    p.outs
+        .iter()
+        .filter(|o| o.scalar("mixed") == Some(1.0))
+        .count()
 }
 
-impl Point<'_> {
-    /// A scalar over the runs, finite values only.
-    pub fn stat(&self, name: &str) -> Stats {
-        crate::stats::summary::scalar(self.outs.iter().copied(), name)
-    }
-    /// A scalar's value in the first run (the same in every run of a point).
-    pub fn first(&self, name: &str) -> f64 {
-        self.outs
-            .first()
-            .and_then(|o| o.scalar(name))
-            .unwrap_or(f64::NAN)
-    }
-    pub fn cpu(&self) -> f64 {
-        self.outs.iter().map(|o| o.cpu_seconds).sum()
-    }
-    pub fn collisions(&self) -> u64 {
-        self.outs.iter().map(|o| o.collisions).sum()
-    }
-    /// How many runs mixed within their length.
-    pub fn mixed(&self) -> usize {
-        self.outs
-            .iter()
-            .filter(|o| o.scalar("mixed") == Some(1.0))
-            .count()
-    }
-    /// The ensemble mean of a series at each sample time, with its standard
-    /// error over the runs (runs of a point share their sample times; a
-    /// shorter record ends the curve).
-    pub fn mean_curve(&self, name: &str) -> (Vec<f64>, Vec<Stats>) {
-        self.all.mean(self.spec.point_id, name).unwrap_or_default()
+pub fn all_mixed(p: &Point) -> bool {
+    mixed(p) == p.outs.len()
+}
+
+/// A point's name: `what` it is, and its case if it is one.
+pub fn named(p: &Point, what: String) -> String {
+    match &p.spec.case {
+        Some(c) => format!("{what} (case {c})"),
+        None => what,
     }
 }
 
-fn dimension(spec: &RunSpec) -> usize {
-    crate::scene::resolve(&spec.descriptor.scene)
-        .ok()
-        .and_then(|s| s.dimension().ok())
-        .unwrap_or(0)
+/// The mixing time over the runs that mixed: a lower bound when some did
+/// not, only the run length when none did.
+pub fn tau_text(p: &Point) -> String {
+    let tau = p.stat("mixing_time");
+    match mixed(p) {
+        0 => format!(
+            "> {} (none mixed)",
+            num(p.spec.descriptor.run.duration.unwrap_or(f64::NAN))
+        ),
+        k if k < p.outs.len() => format!("{} (censored: a lower bound)", pm(tau.mean, tau.stderr)),
+        _ => pm(tau.mean, tau.stderr),
+    }
+}
+
+/// The distinct values of `value` over the points, in increasing order.
+pub fn distinct<'a>(points: impl IntoIterator<Item = &'a Point<'a>>, value: &str) -> Vec<f64> {
+    let mut v: Vec<f64> = points.into_iter().map(|p| p.first(value)).collect();
+    v.sort_by(f64::total_cmp);
+    v.dedup();
+    v
+}
+
+/// Measured points (x, mean ± standard error): their error bars, and
+/// markers at their means.
+pub fn measured(points: &[(f64, Stats)], paint: Paint, label: String) -> [Layer; 2] {
+    let bars = points
+        .iter()
+        .map(|(x, s)| (*x, s.mean - s.stderr, s.mean, s.mean + s.stderr));
+    [
+        Layer::ErrorBars {
+            bars: bars.collect(),
+            paint,
+        },
+        Layer::Markers {
+            points: points.iter().map(|(x, s)| (*x, s.mean)).collect(),
+            paint,
+            label: Some(label),
+        },
+    ]
+}
+
+/// A thin dashed line.
+pub fn dashed(points: Vec<(f64, f64)>, paint: Paint, label: Option<String>) -> Layer {
+    Layer::Line {
+        points,
+        paint,
+        width: 1,
+        dashed: true,
+        label,
+    }
+}
+
+/// A figure in `file` (title, axis labels, log axes x and y), and the
+/// Markdown that shows it under `caption`.
+pub fn figure(
+    file: &str,
+    (title, x_label, y_label): (String, &str, &str),
+    (x_log, y_log): (bool, bool),
+    layers: Vec<Layer>,
+    caption: &str,
+) -> (Figure, String) {
+    let chart = ChartSpec {
+        title,
+        x_label: x_label.into(),
+        y_label: y_label.into(),
+        x_log,
+        y_log,
+        layers,
+    };
+    let text = format!("![{caption}]({file})\n\n");
+    (
+        Figure {
+            file: file.into(),
+            chart,
+        },
+        text,
+    )
 }
 
 pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
-    let mut by_point: BTreeMap<u64, Point> = BTreeMap::new();
-    for (spec, out) in runs.iter() {
-        by_point
-            .entry(spec.point_id)
-            .or_insert_with(|| Point {
-                spec,
-                outs: Vec::new(),
-                all: runs,
-            })
-            .outs
-            .push(out);
-    }
-    let (rods, disks): (Vec<Point>, Vec<Point>) =
-        by_point.into_values().partition(|p| dimension(p.spec) == 1);
+    let (rods, disks): (Vec<Point>, Vec<Point>) = by_point(runs)
+        .into_iter()
+        .partition(|p| p.scene().and_then(|s| s.dimension().ok()) == Some(1));
     let mut markdown = String::new();
     let mut figures: Vec<Figure> = Vec::new();
     if !rods.is_empty() {
-        section_rods::write(&rods, &mut markdown, &mut figures);
+        markdown.push_str(&section_rods::part(&rods, &mut figures));
     }
     if !disks.is_empty() {
-        section_disks::write(&disks, &mut markdown, &mut figures);
+        markdown.push_str(&section_disks::part(&disks, &mut figures));
     }
     markdown.push_str(METHODS);
     Ok(ReportSection {
@@ -90,25 +136,24 @@ pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
     })
 }
 
-const METHODS: &str = "\n### How each number is measured\n\n\
-docs/mixing.md gives the definitions and why. In short: **1D** runs start with all the kinetic energy \
-in one rod (the scene's piston rod; the gas at rest), between walls. The energy concentration \
-Y = Σ(Kᵢ/K)² (`energy_concentration`) is 1 then; at equilibrium the energy shares are \
-Dirichlet(½, …, ½) whatever the masses, and Y averages 3/(N + 2). The **mixing time** (`mixing_time`) \
-is the first time the excess Y − 3/(N + 2) falls to 1/e of its start, interpolated between samples; \
-`mixing_collisions` is the same time on the collision clock (collisions per rod, from the run's mean \
-collision rate). A run whose Y never gets there within its length is **not mixed** (`mixed` = 0): it \
-enters no mean, and a point with such runs is listed as censored and left out of every fit. \
-`late_concentration_ratio` is Y over the last half of the run over 3/(N + 2) (1 when mixed); \
-`concentration_change` the largest |Y(t) − Y(0)| (0 to rounding for equal masses: their collisions \
-only swap velocities); `hot_share_ratio` the hot species' energy share over the last half over its \
-count / N (equipartition: 1). **2D** runs start species A in the left half and B in the right of a \
-box with walls along x and periodic along y. The fraction of the disks still in their own half \
-starts at 1 and mixes to ½; its excess over ½ falling to 1/e is the mixing time. The self-diffusion \
-coefficient D (`diffusion`) is measured in a periodic box of the same packing fraction and mass \
-ratio: the slope over 2 of the mean-squared displacement (unwrapped) against lag, over both axes, \
-fitted from a quarter of the longest lag on (`memory_ratio`: how many velocity-memory times D m/kT \
-the fit starts after; above 5 the start's curvature biases D by under 1 %). The diffusion equation \
-between walls from a step gives the fraction in its own half as ½ + Σ_odd 4/(πk)² exp(−k² t/τ_D), \
-τ_D = L²/(π² D), L the centres' room along x; its 1/e time is the diffusive mixing time. Enskog's D \
-for one kind of disk (`diffusion_enskog`) is (1/(2nσ)) √(kT/(π m)) / g(σ), g(σ) from Henderson's equation of state.\n";
+#[cfg(test)]
+mod tests {
+    use super::super::{section_disks, section_rods};
+    use crate::stats::fill::unfilled;
+
+    /// Each half fills every `{key}` of its text (with no points too), and
+    /// the texts it fills only with data hold the keys it fills.
+    #[test]
+    fn every_placeholder_is_filled() {
+        let figures = &mut Vec::new();
+        for text in [
+            section_rods::part(&[], figures),
+            section_disks::part(&[], figures),
+        ] {
+            assert!(unfilled(&text).is_empty(), "{text}");
+        }
+        let widest = ["spread", "heaviest", "times", "verdict"];
+        assert_eq!(unfilled(section_rods::WIDEST), widest);
+        assert_eq!(unfilled(section_disks::BULK), ["verdict", "rows"]);
+    }
+}

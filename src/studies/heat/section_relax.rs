@@ -1,0 +1,127 @@
+//! The relaxation part of the heat section: per point the mean temperature
+//! against time beside the well-mixed model and the collisionless gas, and
+//! a row of times, initial rates and the settled temperature; then the
+//! relaxation time over the model's against the Knudsen number.
+
+use super::section::{Runs, bar, dashed, figure, label, measured, with_z};
+use super::{Gas, model, passage};
+use crate::model::chart::colour;
+use crate::model::report::Figure;
+use crate::stats::fill::fill;
+use crate::stats::format::{count, num, pm};
+use crate::stats::summary::Stats;
+use crate::stats::table::table_row;
+use crate::studies::curves::mean_with_band;
+
+const TEXT: &str = include_str!("relax.md");
+
+/// The relaxation charts show this many well-mixed relaxation times.
+const SHOWN: f64 = 5.0;
+
+/// `window`: the `initial_window` option.
+pub fn part(window: f64, points: &[(Gas, f64, Runs)], figures: &mut Vec<Figure>) -> String {
+    let mut rows = String::new();
+    let mut pictures = String::new();
+    let mut ratio_bars = Vec::new();
+    for (k, (gas, wall, rs)) in points.iter().enumerate() {
+        let name = label(rs, gas);
+        // T = 2K / (d N), the same for every run of the point.
+        let (t, energy) = rs.mean_curve("kinetic_energy");
+        let per_energy = 2.0 / (gas.dimension as f64 * gas.particles);
+        let mean: Vec<Stats> = energy.iter().map(|s| s.scaled(per_energy)).collect();
+        let start = mean.first().map_or(f64::NAN, |s| s.mean);
+        let m = model(gas, *wall, start);
+        let curve: Vec<f64> = mean.iter().map(|s| s.mean).collect();
+        let tau = rs.stat("relaxation_time");
+        let ratio = rs.stat("relaxation_ratio");
+        let ratio_free = rs.stat("relaxation_ratio_free");
+        let half_d = gas.dimension as f64 / 2.0;
+        let free = gas.free(*wall, start, t.last().copied().unwrap_or(0.0));
+        let kn = gas.knudsen();
+        if ratio.mean.is_finite() && kn.is_finite() {
+            ratio_bars.push(bar(kn, &ratio));
+        }
+        let (cpu, collisions) = (rs.cpu(), rs.collisions());
+        rows.push_str(&table_row(&[
+            name.clone(),
+            num(kn),
+            rs.outs.len().to_string(),
+            pm(tau.mean, tau.stderr),
+            num(passage(&t, &curve, *wall, (-1f64).exp())),
+            num(m.relaxation_time()),
+            pm(ratio.mean, ratio.stderr),
+            num(free
+                .as_ref()
+                .map_or(f64::NAN, |f| f.relaxation_time(half_d * wall))),
+            pm(ratio_free.mean, ratio_free.stderr),
+            with_z(&rs.stat("initial_rate_ratio"), 1.0),
+            with_z(&rs.stat("late_temperature"), *wall),
+            num(cpu),
+            count(collisions),
+        ]));
+        let shown = t
+            .iter()
+            .take_while(|&&x| x <= SHOWN * m.relaxation_time())
+            .count()
+            .max(2)
+            .min(t.len());
+        let (t, mean) = (&t[..shown], &mean[..shown]);
+        let file = format!("heat_relaxation_{k}.svg");
+        let mut layers = mean_with_band(
+            t,
+            mean,
+            colour(0),
+            "measured (mean ± standard error)".into(),
+        )
+        .to_vec();
+        let model_curve = t.iter().map(|&x| (x, m.temperature(x))).collect();
+        layers.push(dashed(model_curve, colour(1), "well-mixed model".into()));
+        if let Some(f) = &free {
+            let free_curve = t.iter().map(|&x| (x, f.energy_at(x) / half_d)).collect();
+            let text = "collisionless (exact for points)".into();
+            layers.push(dashed(free_curve, colour(2), text));
+        }
+        let title = format!(
+            "Temperature relaxing to walls at kT = {}, {name}",
+            num(*wall)
+        );
+        let axes = ("time t [σ √(m/kT)]", "kinetic temperature 2K/(dN) [kT]");
+        figures.push(figure(
+            &file,
+            (title, axes.0, axes.1),
+            (false, false),
+            layers,
+        ));
+        pictures.push_str(&format!(
+            "![{name}: ensemble mean of the temperature (band: ±1 standard error over {} runs) and the well-mixed model and the collisionless gas from the same start (dashed).]({file})\n\n",
+            rs.outs.len()
+        ));
+    }
+    let mut ratio_figure = String::new();
+    if !ratio_bars.is_empty() {
+        let file = "heat_relaxation_ratio.svg";
+        let xs = ratio_bars.iter().map(|b| b.0);
+        let ends = [
+            (xs.clone().fold(f64::INFINITY, f64::min), 1.0),
+            (xs.fold(0.0, f64::max), 1.0),
+        ];
+        let mut layers =
+            measured(ratio_bars, colour(0), "measured (mean ± standard error)").to_vec();
+        layers.push(dashed(ends.to_vec(), colour(1), "well-mixed model".into()));
+        let title = "Relaxation time over the well-mixed model's, against Kn".into();
+        let axes = (title, "Knudsen number λ/L", "τ / τ well-mixed");
+        figures.push(figure(file, axes, (true, false), layers));
+        ratio_figure = format!(
+            "![The measured relaxation time over the well-mixed model's against the Knudsen number (points with finite Kn).]({file})\n\n"
+        );
+    }
+    fill(
+        TEXT,
+        &[
+            ("window", num(window)),
+            ("pictures", pictures),
+            ("rows", rows),
+            ("ratio_figure", ratio_figure),
+        ],
+    )
+}
