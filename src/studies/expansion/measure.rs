@@ -130,29 +130,22 @@ impl Gas {
         {
             return Collisionless::Rods(rods);
         }
+        let free = |&(r, m, c): &(f64, f64, usize)| {
+            (
+                FreeExpansion::with(self.length, r, draw.speeds(m)),
+                c as f64,
+            )
+        };
         Collisionless::Free(Mixture {
-            kinds: self
-                .kinds
-                .iter()
-                .map(|&(r, m, c)| {
-                    (
-                        FreeExpansion::with(self.length, r, draw.speeds(m)),
-                        c as f64,
-                    )
-                })
-                .collect(),
+            kinds: self.kinds.iter().map(free).collect(),
         })
     }
 
     /// kT once the gas has shared its energy: the count-weighted mean of
     /// each kind's m <v_x^2>.
     pub fn temperature(&self, draw: Draw) -> f64 {
-        let energy: f64 = self
-            .kinds
-            .iter()
-            .map(|&(_, m, c)| c as f64 * m * draw.speeds(m).mean_square())
-            .sum();
-        energy / self.particles as f64
+        let energy = |&(_, m, c): &(f64, f64, usize)| c as f64 * m * draw.speeds(m).mean_square();
+        self.kinds.iter().map(energy).sum::<f64>() / self.particles as f64
     }
 
     /// Enskog's self-diffusion coefficient of the gas filling the whole box
