@@ -1,5 +1,6 @@
 //! Estimators and error bars shared by studies, and numbers as text.
 
+pub mod blocking;
 pub mod diffusion;
 pub mod ensemble;
 pub mod error_model;
@@ -9,6 +10,7 @@ pub mod goodness;
 pub mod groups;
 pub mod late;
 pub mod line;
+pub mod mser;
 pub mod named;
 pub mod oscillation;
 pub mod passage;

@@ -1,7 +1,7 @@
 //! The expansion's charts of the left fraction and its relaxation time.
 
 use super::group::Group;
-use crate::model::chart::{ChartSpec, Layer, colour};
+use crate::model::chart::{ChartSpec, Layer, Paint, colour};
 use crate::studies::curves::mean_with_band;
 
 /// The charts show the first this many collisionless relaxation times (the
@@ -12,6 +12,8 @@ pub const SHOWN: f64 = 8.0;
 const FREE: usize = 6;
 const DIFFUSIVE: usize = 7;
 const THERMAL: usize = 5;
+
+const LEFT: &str = "fraction of the particles in the left half";
 
 /// One gas (N, radius) at several p_max, against t p_max / m: hard
 /// particles have no energy scale, so the curves of one gas coincide on
@@ -37,40 +39,26 @@ pub fn scaled(gas: &[&Group], title: &str) -> ChartSpec {
     // The theories at p0, drawn against t p0 / m.
     let at = |t: f64| t * mass / p0;
     if let Some(free) = first.free() {
-        layers.push(theory(
-            &grid,
-            |x| free.left_fraction(at(x)),
-            FREE,
-            "collisionless",
-        ));
+        let f = |x| free.left_fraction(at(x));
+        layers.push(theory(&grid, f, FREE, "collisionless"));
     }
     if let Some(thermal) = first.free_thermal() {
-        layers.push(theory(
-            &grid,
-            |x| thermal.left_fraction(at(x)),
-            THERMAL,
-            "collisionless, Maxwellian at the same kT",
-        ));
+        let f = |x| thermal.left_fraction(at(x));
+        let label = "collisionless, Maxwellian at the same kT";
+        layers.push(theory(&grid, f, THERMAL, label));
     }
-    if let Some(g) = &first.gas {
-        let d = first.stat("diffusion_enskog").mean;
-        if d.is_finite() {
-            let diffusive = g.diffusive(d);
-            layers.push(theory(
-                &grid,
-                |x| diffusive.left_fraction(at(x)),
-                DIFFUSIVE,
-                "diffusive (Enskog D)",
-            ));
-        }
+    let d = first.stat("diffusion_enskog").mean;
+    if let (Some(g), true) = (&first.gas, d.is_finite()) {
+        let diffusive = g.diffusive(d);
+        let f = |x| diffusive.left_fraction(at(x));
+        layers.push(theory(&grid, f, DIFFUSIVE, "diffusive (Enskog D)"));
     }
     ChartSpec {
         title: format!("Left fraction during the expansion, {title}"),
         x_label: "scaled time t p_max / m [σ]".into(),
-        y_label: "fraction of the particles in the left half".into(),
-        x_log: false,
-        y_log: false,
+        y_label: LEFT.into(),
         layers,
+        ..Default::default()
     }
 }
 
@@ -86,21 +74,38 @@ pub fn single(g: &Group) -> ChartSpec {
     let label = "measured (mean ± standard error)".to_string();
     let mut layers = mean_with_band(&g.t[..n], &g.mean[..n], colour(0), label).to_vec();
     if let Some(free) = g.free() {
-        layers.push(theory(
-            &g.t[..n],
-            |t| free.left_fraction(t),
-            FREE,
-            "collisionless",
-        ));
+        let f = |t| free.left_fraction(t);
+        layers.push(theory(&g.t[..n], f, FREE, "collisionless"));
     }
     ChartSpec {
         title: format!("Left fraction during the expansion, {}", g.label()),
         x_label: "time t [σ √(m/kT)]".into(),
-        y_label: "fraction of the particles in the left half".into(),
-        x_log: false,
-        y_log: false,
+        y_label: LEFT.into(),
         layers,
+        ..Default::default()
     }
+}
+
+/// The measured relaxation times of groups at x, times a scale, as error
+/// bars and markers.
+fn measured(groups: &[(f64, &Group, f64)], paint: Paint, label: &str) -> [Layer; 2] {
+    let tau = |g: &Group| g.stat("relaxation_time");
+    let bar = |&(x, g, scale): &(f64, &Group, f64)| {
+        let t = tau(g);
+        let (low, high) = (t.mean - t.stderr, t.mean + t.stderr);
+        (x, low * scale, t.mean * scale, high * scale)
+    };
+    [
+        Layer::ErrorBars {
+            bars: groups.iter().map(bar).collect(),
+            paint,
+        },
+        Layer::Markers {
+            points: (groups.iter().map(|&(x, g, scale)| (x, tau(g).mean * scale))).collect(),
+            paint,
+            label: Some(label.into()),
+        },
+    ]
 }
 
 /// Relaxation time against p_max, log-log, one colour per gas (N,
@@ -108,27 +113,10 @@ pub fn single(g: &Group) -> ChartSpec {
 pub fn tau_against_p(gases: &[(String, Vec<&Group>)]) -> ChartSpec {
     let mut layers = Vec::new();
     for (i, (label, gs)) in gases.iter().enumerate() {
-        let mut bars = Vec::new();
-        let mut points = Vec::new();
-        let mut free = Vec::new();
-        for g in gs {
-            let tau = g.stat("relaxation_time");
-            let p = g.p_max();
-            bars.push((p, tau.mean - tau.stderr, tau.mean, tau.mean + tau.stderr));
-            points.push((p, tau.mean));
-            free.push((p, g.tau_free()));
-        }
-        layers.push(Layer::ErrorBars {
-            bars,
-            paint: colour(i),
-        });
-        layers.push(Layer::Markers {
-            points,
-            paint: colour(i),
-            label: Some(label.clone()),
-        });
+        let at: Vec<(f64, &Group, f64)> = gs.iter().map(|g| (g.p_max(), *g, 1.0)).collect();
+        layers.extend(measured(&at, colour(i), label));
         layers.push(Layer::Line {
-            points: free,
+            points: gs.iter().map(|g| (g.p_max(), g.tau_free())).collect(),
             paint: colour(i).faded(0.6),
             width: 1,
             dashed: true,
@@ -150,57 +138,34 @@ pub fn tau_against_p(gases: &[(String, Vec<&Group>)]) -> ChartSpec {
 /// against the Knudsen number: the collisionless theory holds on the right
 /// (a constant), the diffusive one (τ p / L ∝ 1/Kn) would on the left.
 pub fn tau_against_knudsen(sweep: &[&Group], measured_d: Option<(f64, f64)>) -> ChartSpec {
-    let mut bars = Vec::new();
-    let mut points = Vec::new();
-    let mut free = Vec::new();
-    let mut diffusive = Vec::new();
+    let mut at = Vec::new();
+    let (mut free, mut diffusive) = (Vec::new(), Vec::new());
     for g in sweep {
         let Some(gas) = &g.gas else { continue };
         let scale = g.p_max() / (gas.kinds[0].1 * gas.length);
         let kn = gas.knudsen();
-        let tau = g.stat("relaxation_time");
-        bars.push((
-            kn,
-            (tau.mean - tau.stderr) * scale,
-            tau.mean * scale,
-            (tau.mean + tau.stderr) * scale,
-        ));
-        points.push((kn, tau.mean * scale));
+        at.push((kn, *g, scale));
         free.push((kn, g.tau_free() * scale));
         diffusive.push((kn, g.stat("relaxation_time_diffusive").mean * scale));
     }
-    let by_kn = |v: &mut Vec<(f64, f64)>| v.sort_by(|a, b| a.0.total_cmp(&b.0));
-    by_kn(&mut free);
-    by_kn(&mut diffusive);
-    let mut layers = vec![
-        Layer::ErrorBars {
-            bars,
-            paint: colour(0),
-        },
-        Layer::Markers {
-            points,
-            paint: colour(0),
-            label: Some("measured (every sweep point)".into()),
-        },
-        Layer::Line {
-            points: free,
-            paint: colour(FREE),
-            width: 2,
-            dashed: true,
-            label: Some("collisionless".into()),
-        },
-        Layer::Markers {
-            points: diffusive,
-            paint: colour(DIFFUSIVE),
-            label: Some("diffusive, Enskog D".into()),
-        },
-    ];
-    if let Some((kn, scaled)) = measured_d {
-        layers.push(Layer::Markers {
-            points: vec![(kn, scaled)],
-            paint: colour(3),
-            label: Some("diffusive, measured D".into()),
-        });
+    free.sort_by(|a, b| a.0.total_cmp(&b.0));
+    diffusive.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut layers = measured(&at, colour(0), "measured (every sweep point)").to_vec();
+    layers.push(Layer::Line {
+        points: free,
+        paint: colour(FREE),
+        width: 2,
+        dashed: true,
+        label: Some("collisionless".into()),
+    });
+    let markers = |points, paint, label: &str| Layer::Markers {
+        points,
+        paint: colour(paint),
+        label: Some(label.into()),
+    };
+    layers.push(markers(diffusive, DIFFUSIVE, "diffusive, Enskog D"));
+    if let Some(point) = measured_d {
+        layers.push(markers(vec![point], 3, "diffusive, measured D"));
     }
     ChartSpec {
         title: "Relaxation time over the crossing time L m / p_max, against Kn = λ / L".into(),

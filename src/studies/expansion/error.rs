@@ -1,18 +1,13 @@
-//! The error model of the relaxation time of the left fraction.
-//!
-//! The relaxation time is the first passage of the left fraction's excess
-//! over 1/2 to 1/e of its start, a transient: a run longer than the
-//! relaxation buys nothing (exponent 0), only replicas do. The left fraction
-//! of N particles fluctuates by about 1/(2√N) around its mean curve, and a
-//! crossing time scatters by that over the curve's slope at the crossing:
-//! one run's relative scatter is k/√N, k set by the curve's shape. For
-//! particles that never collide the shape is fixed (the exact collisionless
-//! decay), and k is measured by the accuracy study's `headline-expansion-n*`
-//! cases (disks of radius 0.05 in the 40 x 40 box, seed 15, 32 replicas
-//! each) at N = 25, 100 and 400, read between them and held beyond. A gas
-//! that collides relaxes faster and more steeply: its k is smaller (0.75
-//! against 1.4 at N = 400 with diameter 1, in a one-off check), so the model errs on the wide
-//! side there.
+//! The error model of the relaxation time of the left fraction, a
+//! transient (a longer run buys nothing, exponent 0; only replicas do).
+//! The left fraction of N particles fluctuates by about 1/(2√N) about its
+//! mean curve, and a crossing time by that over the curve's slope there:
+//! one run's relative scatter is k/√N, k set by the curve's shape. k is
+//! measured for nearly collisionless disks by the accuracy study's
+//! `headline-expansion-n*` cases (radius 0.05 in the 40 x 40 box, seed 15,
+//! 32 replicas each). A colliding gas relaxes more steeply and scatters
+//! less (k = 0.75 against 1.4 at N = 400 with diameter 1, a one-off check),
+//! so the model errs on the wide side there.
 
 use crate::model::descriptor::Descriptor;
 use crate::stats::error_model::{ErrorModel, log_interpolate, within};

@@ -4,7 +4,6 @@
 
 use super::measure::{Draw, Gas, draw};
 use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
 use crate::stats::ensemble::Runs;
 use crate::stats::format::num;
 use crate::stats::passage::first_passage;
@@ -26,20 +25,16 @@ pub struct Group<'a> {
     pub mean: Vec<Stats>,
 }
 
-/// A sweep point's or case's runs, keyed by (case, point).
-type ByPoint<'a> = BTreeMap<(Option<String>, u64), Vec<&'a (RunSpec, RunOutput)>>;
-
 /// Runs grouped by sweep point (in order), then by case (in name order).
 pub fn groups(runs: &Runs) -> Vec<Group<'_>> {
-    let mut by: ByPoint = BTreeMap::new();
-    for r in runs.iter() {
-        let key = (r.0.case.clone(), r.0.point_id);
-        by.entry(key).or_default().push(r);
+    let mut by: BTreeMap<(Option<String>, u64), Vec<_>> = BTreeMap::new();
+    for (spec, out) in runs.iter() {
+        let key = (spec.case.clone(), spec.point_id);
+        by.entry(key).or_default().push((spec, out));
     }
     by.into_iter()
         .map(|((case, point), rs)| {
             let d = &rs[0].0.descriptor;
-            let outs: Vec<&RunOutput> = rs.iter().map(|r| &r.1).collect();
             let (t, mean) = runs.mean(point, "left_fraction").unwrap_or_default();
             Group {
                 case,
@@ -47,7 +42,7 @@ pub fn groups(runs: &Runs) -> Vec<Group<'_>> {
                 all: runs,
                 gas: Gas::of_descriptor(d),
                 draw: draw(d),
-                outs,
+                outs: rs.iter().map(|r| r.1).collect(),
                 t,
                 mean,
             }
@@ -107,7 +102,7 @@ impl Group<'_> {
         }
     }
 
-    /// "p_max = 2" or "kT = 1".
+    /// "p_max = 2" or "Maxwell kT = 1".
     pub fn start_text(&self) -> String {
         match self.draw {
             Some(Draw::Uniform(p)) => format!("p_max = {}", num(p)),
@@ -116,30 +111,11 @@ impl Group<'_> {
         }
     }
 
+    /// "case: 100 disks, radius 0.5, p_max = 1".
     pub fn label(&self) -> String {
-        let what = match self.dimension() {
-            1 => "rods",
-            3 => "spheres",
-            _ => "disks",
-        };
-        let case = self
-            .case
-            .as_ref()
-            .map(|c| format!("{c}: "))
-            .unwrap_or_default();
-        format!(
-            "{case}{} {what}, radius {}, {}",
-            self.particles(),
-            num(self.radius()),
-            self.start_text()
-        )
-    }
-
-    pub fn cpu_seconds(&self) -> f64 {
-        self.outs.iter().map(|o| o.cpu_seconds).sum()
-    }
-
-    pub fn collisions(&self) -> u64 {
-        self.outs.iter().map(|o| o.collisions).sum()
+        let what = ["disks", "rods", "disks", "spheres"][self.dimension().min(3)];
+        let case = (self.case.as_ref()).map_or(String::new(), |c| format!("{c}: "));
+        let (n, r) = (self.particles(), num(self.radius()));
+        format!("{case}{n} {what}, radius {r}, {}", self.start_text())
     }
 }

@@ -3,31 +3,19 @@
 //! prediction for the scene it started from.
 
 use crate::model::descriptor::Descriptor;
-use crate::model::scene::Velocities;
-use crate::scene::{Built, OnBuilt, on_built};
-use crate::stats::late::LATE;
+use crate::model::scene::{Drawn, Velocities};
+use crate::scene::Built;
+use crate::stats::late::late_mean;
 use crate::theory::expansion::{Diffusive, FreeExpansion, Mixture, Speeds, compressibility};
 use crate::theory::expansion_rods::{Collisionless, Rods};
 use crate::theory::self_diffusion;
 
-/// Mean of f over the last `LATE` of the run (see `stats::late`), and its mean square
-/// deviation from 1/2 (the mean by symmetry: a run's own mean would hide
-/// its slowest fluctuations).
+/// Mean of f over the last `LATE` of the run (see `stats::late`), and its
+/// mean square deviation from 1/2 (the mean by symmetry: a run's own mean
+/// would hide its slowest fluctuations).
 pub fn late(t: &[f64], f: &[f64]) -> (f64, f64) {
-    let (Some(&t0), Some(&t1)) = (t.first(), t.last()) else {
-        return (f64::NAN, f64::NAN);
-    };
-    let from = t1 - LATE * (t1 - t0);
-    let v: Vec<f64> = t
-        .iter()
-        .zip(f)
-        .filter(|(t, _)| **t >= from)
-        .map(|(_, f)| *f)
-        .collect();
-    let n = v.len() as f64;
-    let mean = v.iter().sum::<f64>() / n;
-    let var = v.iter().map(|x| (x - 0.5).powi(2)).sum::<f64>() / n;
-    (mean, var)
+    let square: Vec<f64> = f.iter().map(|x| (x - 0.5).powi(2)).collect();
+    (late_mean(t, f), late_mean(t, &square))
 }
 
 /// The scene as the theory sees it: its particles' kinds (radius, mass,
@@ -46,49 +34,66 @@ pub struct Gas {
 }
 
 impl Gas {
+    /// The gas a run started with.
     pub fn of<const D: usize>(built: &Built<D>) -> Gas {
+        let moving = (built.particles.iter()).filter(|p| !p.is_immovable() && !p.is_plane());
+        Gas::new(
+            D,
+            &built.sim_box.size,
+            moving.map(|p| (p.radius, p.mass(), 1)),
+        )
+    }
+
+    /// The gas a descriptor's scene describes, read from the spec (not
+    /// built): None when radii or masses are drawn from ranges, which only
+    /// a run knows.
+    pub fn of_descriptor(d: &Descriptor) -> Option<Gas> {
+        let scene = crate::scene::resolve(&d.scene).ok()?;
+        let kinds = (scene.species.iter().filter(|s| s.count > 0))
+            .map(|s| match (s.radius, s.mass) {
+                (Drawn::Fixed(r), Drawn::Fixed(m)) => Some((r, m, s.count)),
+                _ => None,
+            })
+            .collect::<Option<Vec<_>>>()?;
+        Some(Gas::new(
+            scene.dimension().ok()?,
+            scene.box_size.as_ref()?,
+            kinds,
+        ))
+    }
+
+    /// From (radius, mass, count) groups, those of one radius and mass
+    /// merged, in a box of edges `size`.
+    fn new(
+        dimension: usize,
+        size: &[f64],
+        groups: impl IntoIterator<Item = (f64, f64, usize)>,
+    ) -> Gas {
         let mut kinds: Vec<(f64, f64, usize)> = Vec::new();
-        let moving = built
-            .particles
-            .iter()
-            .filter(|p| !p.is_immovable() && !p.is_plane());
-        for p in moving {
-            let m = p.mass();
-            match kinds.iter_mut().find(|k| k.0 == p.radius && k.1 == m) {
-                Some(k) => k.2 += 1,
-                None => kinds.push((p.radius, m, 1)),
+        for (r, m, c) in groups {
+            match kinds.iter_mut().find(|k| k.0 == r && k.1 == m) {
+                Some(k) => k.2 += c,
+                None => kinds.push((r, m, c)),
             }
         }
         let n: usize = kinds.iter().map(|k| k.2).sum();
         let diameter = kinds.iter().map(|k| 2.0 * k.0 * k.2 as f64).sum::<f64>() / n as f64;
-        let ball = |r: f64| match D {
+        let ball = |r: f64| match dimension {
             1 => 2.0 * r,
             2 => std::f64::consts::PI * r * r,
             _ => 4.0 / 3.0 * std::f64::consts::PI * r.powi(3),
         };
         let filled: f64 = kinds.iter().map(|k| ball(k.0) * k.2 as f64).sum();
+        let volume: f64 = size.iter().product();
         Gas {
-            dimension: D,
-            packing: filled / built.sim_box.volume(),
-            length: built.sim_box.size[0],
+            dimension,
+            packing: filled / volume,
+            length: size[0],
             particles: n,
-            density: n as f64 / built.sim_box.volume(),
+            density: n as f64 / volume,
             diameter,
             kinds,
         }
-    }
-
-    /// The scene a descriptor gives (built from seed 0: counts and the box
-    /// do not depend on the draws, radii and masses drawn from ranges do).
-    pub fn of_descriptor(d: &Descriptor) -> Option<Gas> {
-        struct Of;
-        impl OnBuilt for Of {
-            type Output = Gas;
-            fn on<const D: usize>(self, built: &Built<D>) -> Gas {
-                Gas::of(built)
-            }
-        }
-        on_built(&crate::scene::resolve(&d.scene).ok()?, 0, Of)
     }
 
     /// Mean free path over the box length along x at the final (whole box)
@@ -125,29 +130,22 @@ impl Gas {
         {
             return Collisionless::Rods(rods);
         }
+        let free = |&(r, m, c): &(f64, f64, usize)| {
+            (
+                FreeExpansion::with(self.length, r, draw.speeds(m)),
+                c as f64,
+            )
+        };
         Collisionless::Free(Mixture {
-            kinds: self
-                .kinds
-                .iter()
-                .map(|&(r, m, c)| {
-                    (
-                        FreeExpansion::with(self.length, r, draw.speeds(m)),
-                        c as f64,
-                    )
-                })
-                .collect(),
+            kinds: self.kinds.iter().map(free).collect(),
         })
     }
 
     /// kT once the gas has shared its energy: the count-weighted mean of
     /// each kind's m <v_x^2>.
     pub fn temperature(&self, draw: Draw) -> f64 {
-        let energy: f64 = self
-            .kinds
-            .iter()
-            .map(|&(_, m, c)| c as f64 * m * draw.speeds(m).mean_square())
-            .sum();
-        energy / self.particles as f64
+        let energy = |&(_, m, c): &(f64, f64, usize)| c as f64 * m * draw.speeds(m).mean_square();
+        self.kinds.iter().map(energy).sum::<f64>() / self.particles as f64
     }
 
     /// Enskog's self-diffusion coefficient of the gas filling the whole box

@@ -14,7 +14,8 @@ use super::{Finished, Start, Study};
 use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
 use crate::model::report::ReportSection;
-use crate::model::run_output::RunOutput;
+use crate::model::run_output::{RunOutput, Series};
+use crate::stats::diffusion::diffusion;
 use crate::stats::ensemble::Runs;
 use crate::stats::passage::first_passage;
 pub use measure::{Draw, Gas, draw, late, starts_left};
@@ -87,19 +88,13 @@ impl Study for Expansion {
         let (mean, variance) = late(t, f);
         let drawn = draw(run.descriptor);
         let start = drawn.filter(|_| left);
-        let free = start
-            .map(|d| gas.free(d).relaxation_time())
-            .unwrap_or(f64::NAN);
+        let free = start.map_or(f64::NAN, |d| gas.free(d).relaxation_time());
         let enskog = drawn.map_or(f64::NAN, |d| gas.diffusion_enskog(d));
         let n = gas.particles as f64;
         // A run that records the mean-squared displacement (a case with a
         // periodic y axis, the gas filling the box) measures D along y.
-        let measured = out
-            .series
-            .iter()
-            .filter(|s| s.observable.starts_with("msd.") && s.observable.ends_with(".y"))
-            .map(|s| crate::stats::diffusion::diffusion(&s.t, &s.value).0)
-            .next();
+        let msd_y = |s: &&Series| s.observable.starts_with("msd.") && s.observable.ends_with(".y");
+        let measured = (out.series.iter().find(msd_y)).map(|s| diffusion(&s.t, &s.value).0);
         out.scalars.extend(
             [
                 ("particles", n),

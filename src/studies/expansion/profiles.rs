@@ -177,19 +177,8 @@ pub fn section(g: &Group, name: &str) -> Option<(Vec<Figure>, String)> {
         let _ = writeln!(md, " {} |", num(p.thermal_share));
     }
     md.push('\n');
-    Some((
-        vec![
-            Figure {
-                file: fd,
-                chart: density,
-            },
-            Figure {
-                file: ft,
-                chart: temperature,
-            },
-        ],
-        md,
-    ))
+    let figure = |file: String, chart| Figure { file, chart };
+    Some((vec![figure(fd, density), figure(ft, temperature)], md))
 }
 
 fn chart(
@@ -222,8 +211,7 @@ fn chart(
         title,
         x_label: "x [σ]".into(),
         y_label: y_label.into(),
-        x_log: false,
-        y_log: false,
         layers,
+        ..Default::default()
     }
 }

@@ -2,7 +2,8 @@
 //! and the Knudsen number beside the collisionless and diffusive
 //! predictions; per gas the ensemble-mean left fraction; a table of every
 //! point and case with the settled split and its z-scores and the cost;
-//! the profiles and the measured diffusion coefficient of the cases.
+//! the profiles and the measured diffusion coefficient of the cases. The
+//! prose is in the Markdown beside it.
 
 use super::RESULTS;
 use super::charts::{scaled, single, tau_against_knudsen, tau_against_p};
@@ -10,15 +11,25 @@ use super::group::{Group, groups};
 use super::profiles;
 use crate::model::report::{Figure, ReportSection};
 use crate::stats::ensemble::Runs;
+use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
 use crate::stats::line::line;
 use crate::stats::summary::Stats;
 use crate::theory::expansion_rods::Collisionless;
 use std::fmt::Write;
 
+const INTRO: &str = include_str!("intro.md");
+const METHODS: &str = include_str!("methods.md");
+
 /// Beyond this many collisionless relaxation times the curves are compared
 /// no further: both are within noise of 1/2 there.
 pub const COMPARED: f64 = 3.0;
+
+/// |z| below which a measurement agrees with a prediction.
+const AGREE: f64 = 4.0;
+
+/// A sweep's gas (N, radius) and its points, one per p_max.
+type GasPoints<'a> = (String, Vec<&'a Group<'a>>);
 
 /// Largest |mean - theory| over the collisionless prediction's own standard
 /// error of a mean over `runs` runs of `n` particles, sqrt(f (1 - f) / (n
@@ -51,21 +62,15 @@ pub fn largest_z(
 
 /// Max |z| of a group's mean curve against a collisionless curve.
 fn free_z(g: &Group, free: Option<Collisionless>) -> f64 {
-    match free {
-        Some(f) => largest_z(
-            &g.t,
-            &g.mean,
-            &|t| f.left_fraction(t),
-            g.particles(),
-            COMPARED * f.relaxation_time(),
-        ),
-        None => f64::NAN,
-    }
+    free.map_or(f64::NAN, |f| {
+        let until = COMPARED * f.relaxation_time();
+        largest_z(&g.t, &g.mean, &|t| f.left_fraction(t), g.particles(), until)
+    })
 }
 
 /// Power of p_max in the relaxation time of one gas: the weighted slope of
-/// ln tau against ln p_max (weights from the runs' standard errors), its
-/// standard error and z against -1.
+/// ln tau against ln p_max (weights from the runs' standard errors) and its
+/// standard error.
 fn exponent(gs: &[&Group]) -> (f64, f64) {
     let (mut x, mut y, mut w) = (Vec::new(), Vec::new(), Vec::new());
     for g in gs {
@@ -84,22 +89,42 @@ fn z(mean: f64, theory: f64, se: f64) -> f64 {
     (mean - theory) / se
 }
 
+/// The items, or "none".
+fn list(v: &[String]) -> String {
+    if v.is_empty() {
+        "none".into()
+    } else {
+        v.join("; ")
+    }
+}
+
+/// Names sorted by whether their |z| agrees; NaN in neither.
+#[derive(Default)]
+struct Verdicts {
+    agree: Vec<String>,
+    differ: Vec<String>,
+}
+
+impl Verdicts {
+    fn add(&mut self, name: String, z: f64) {
+        if z.abs() < AGREE {
+            self.agree.push(name);
+        } else if z.is_finite() {
+            self.differ.push(name);
+        }
+    }
+}
+
 pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
     let all = groups(runs);
     let sweep: Vec<&Group> = all.iter().filter(|g| g.case.is_none()).collect();
     let is = |g: &Group, prefix: &str| g.case.as_deref().is_some_and(|c| c.starts_with(prefix));
-    let profile_cases: Vec<&Group> = all.iter().filter(|g| is(g, "profiles")).collect();
-    let diffusion: Vec<&Group> = all
-        .iter()
-        .filter(|g| g.stat("diffusion_measured").n > 0)
+    let measures_d = |g: &Group| g.stat("diffusion_measured").n > 0;
+    let expansion_cases: Vec<&Group> = (all.iter())
+        .filter(|g| g.case.is_some() && !is(g, "profiles") && !measures_d(g))
         .collect();
-    let expansion_cases: Vec<&Group> = all
-        .iter()
-        .filter(|g| g.case.is_some() && !is(g, "profiles") && g.stat("diffusion_measured").n == 0)
-        .collect();
-
     // The sweep's gases (N, radius), each at its values of p_max.
-    let mut gases: Vec<(String, Vec<&Group>)> = Vec::new();
+    let mut gases: Vec<GasPoints> = Vec::new();
     for g in &sweep {
         let label = format!("N = {}, radius {}", g.particles(), num(g.radius()));
         match gases.iter_mut().find(|(l, _)| *l == label) {
@@ -107,84 +132,127 @@ pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
             None => gases.push((label, vec![g])),
         }
     }
-
     let mut figures = Vec::new();
     let mut md = String::from(INTRO);
-
-    // The diffusion coefficient measured in the case that records it.
-    let mut measured_point = None;
-    if let Some(g) = diffusion.first() {
-        let measured = g.stat("diffusion_measured");
-        let enskog = g.stat("diffusion_enskog").mean;
-        let gas = g.gas.as_ref();
-        let tau_d = gas.map_or(f64::NAN, |gas| {
-            gas.diffusive(measured.mean).relaxation_time()
-        });
-        if let Some(gas) = gas {
-            let scale = g.p_max() / (gas.kinds[0].1 * gas.length);
-            measured_point = Some((gas.knudsen(), tau_d * scale));
-        }
-        let _ = writeln!(
-            md,
-            "**Diffusion coefficient** (case `{}`: {}, filling the box, y periodic): measured from the \
-             mean-squared displacement along y, D = {} σ² per unit time over {} runs; Enskog's \
-             (kinetic theory at the final density and kT = p_max²/3m) {}, ratio {}. The diffusive \
-             relaxation time with the measured D is {} (Enskog's: {}); the measured one, at the same \
-             gas in the left half (the sweep, same N, radius and p_max), is in the table.\n",
-            g.case.as_deref().unwrap_or(""),
-            g.label(),
-            pm(measured.mean, measured.stderr),
-            measured.n,
-            num(enskog),
-            num(measured.mean / enskog),
-            num(tau_d),
-            num(gas.map_or(f64::NAN, |gas| gas.diffusive(enskog).relaxation_time())),
-        );
-    }
-
-    // Relaxation time against p_max and the Knudsen number.
+    let diffusion = all.iter().find(|g| measures_d(g));
+    let measured_point = diffusion.and_then(|g| diffusion_text(&mut md, g));
     if sweep.iter().any(|g| g.p_max().is_finite()) {
-        figures.push(Figure {
-            file: "expansion_tau_p_max.svg".into(),
-            chart: tau_against_p(&gases),
-        });
-        figures.push(Figure {
-            file: "expansion_tau_knudsen.svg".into(),
-            chart: tau_against_knudsen(&sweep, measured_point),
-        });
+        for (file, chart) in [
+            ("expansion_tau_p_max.svg", tau_against_p(&gases)),
+            (
+                "expansion_tau_knudsen.svg",
+                tau_against_knudsen(&sweep, measured_point),
+            ),
+        ] {
+            let file = file.into();
+            figures.push(Figure { file, chart });
+        }
         md.push_str(
             "![Relaxation time against p_max, one colour per gas, with the collisionless time \
              (dashed).](expansion_tau_p_max.svg)\n\n\
              ![τ p_max / (m L) against the Knudsen number: the collisionless prediction (dashed) \
              is a constant, the diffusive one grows as 1/Kn.](expansion_tau_knudsen.svg)\n\n",
         );
-        md.push_str(
-            "| gas | Kn = λ/L | points | τ ∝ p_max^a: a | z (a = −1) | τ p_max / (m L), measured at the smallest p_max | collisionless |\n\
-             |---|---|---|---|---|---|---|\n",
-        );
-        for (label, gs) in &gases {
-            let (a, se) = exponent(gs);
-            let g = gs[0];
-            let scale = g
-                .gas
-                .as_ref()
-                .map_or(f64::NAN, |gas| g.p_max() / (gas.kinds[0].1 * gas.length));
-            let _ = writeln!(
-                md,
-                "| {label} | {} | {} | {} | {} | {} | {} |",
-                num(g.stat("knudsen").mean),
-                gs.len(),
-                pm(a, se),
-                num(z(a, -1.0, se)),
-                num(g.stat("relaxation_time").mean * scale),
-                num(g.tau_free() * scale)
-            );
-        }
-        md.push('\n');
+        md.push_str(&exponent_table(&gases));
     }
+    left_fractions(&mut md, &mut figures, &gases, &expansion_cases);
+    md.push_str(&points_table(sweep.iter().chain(&expansion_cases)));
+    for g in all.iter().filter(|g| is(g, "profiles")) {
+        let name = g.case.clone().unwrap_or_default();
+        if let Some((fs, text)) = profiles::section(g, &name) {
+            let _ = writeln!(md, "**Profiles during the expansion**, case `{name}`:\n");
+            md.push_str(&text);
+            figures.extend(fs);
+        }
+    }
+    md.push_str(&methods());
+    Ok(ReportSection {
+        title: "Expansion of the gas".into(),
+        markdown: md,
+        figures,
+        presents: RESULTS.iter().map(|r| r.to_string()).collect(),
+    })
+}
 
-    // The left fraction of each gas (on the scaled time axis when it was
-    // started with uniform momenta), then of each case.
+fn methods() -> String {
+    let values = [("agree", num(AGREE)), ("compared", num(COMPARED))];
+    fill(METHODS, &values)
+}
+
+/// τ over the box crossing time L m / p_max of a gas's first point.
+fn crossing_scale(g: &Group) -> f64 {
+    (g.gas.as_ref()).map_or(f64::NAN, |gas| g.p_max() / (gas.kinds[0].1 * gas.length))
+}
+
+/// The diffusion coefficient measured in the case that records it, and
+/// (Kn, scaled diffusive time) with it for the Knudsen chart.
+fn diffusion_text(md: &mut String, g: &Group) -> Option<(f64, f64)> {
+    let measured = g.stat("diffusion_measured");
+    let enskog = g.stat("diffusion_enskog").mean;
+    let gas = g.gas.as_ref();
+    let tau = |d: f64| gas.map_or(f64::NAN, |gas| gas.diffusive(d).relaxation_time());
+    let _ = writeln!(
+        md,
+        "**Diffusion coefficient** (case `{}`: {}, filling the box, y periodic): measured from the \
+         mean-squared displacement along y, D = {} σ² per unit time over {} runs; Enskog's \
+         (kinetic theory at the final density and kT = p_max²/3m) {}, ratio {}. The diffusive \
+         relaxation time with the measured D is {} (Enskog's: {}); the measured one, at the same \
+         gas in the left half (the sweep, same N, radius and p_max), is in the table.\n",
+        g.case.as_deref().unwrap_or(""),
+        g.label(),
+        pm(measured.mean, measured.stderr),
+        measured.n,
+        num(enskog),
+        num(measured.mean / enskog),
+        num(tau(measured.mean)),
+        num(tau(enskog)),
+    );
+    Some((gas?.knudsen(), tau(measured.mean) * crossing_scale(g)))
+}
+
+/// Per gas the power of p_max in τ, and whether τ ∝ 1/p_max.
+fn exponent_table(gases: &[GasPoints]) -> String {
+    let mut md = String::from(
+        "| gas | Kn = λ/L | points | τ ∝ p_max^a: a | z (a = −1) | τ p_max / (m L), measured at the smallest p_max | collisionless |\n\
+         |---|---|---|---|---|---|---|\n",
+    );
+    let mut inverse = Verdicts::default();
+    for (label, gs) in gases {
+        let (a, se) = exponent(gs);
+        let (g, scale) = (gs[0], crossing_scale(gs[0]));
+        let _ = writeln!(
+            md,
+            "| {label} | {} | {} | {} | {} | {} | {} |",
+            num(g.stat("knudsen").mean),
+            gs.len(),
+            pm(a, se),
+            num(z(a, -1.0, se)),
+            num(g.stat("relaxation_time").mean * scale),
+            num(g.tau_free() * scale)
+        );
+        inverse.add(format!("{label} (a = {})", pm(a, se)), z(a, -1.0, se));
+    }
+    if inverse.differ.is_empty() && !inverse.agree.is_empty() {
+        md.push_str("\n**Yes, τ changes with p_max: τ ∝ 1/p_max for every gas swept.**");
+    }
+    let _ = writeln!(
+        md,
+        " The power a is −1 within {} standard errors for: {}. It is not for: {}.\n",
+        num(AGREE),
+        list(&inverse.agree),
+        list(&inverse.differ)
+    );
+    md
+}
+
+/// The left fraction of each gas (on the scaled time axis when it was
+/// started with uniform momenta), then of each case.
+fn left_fractions<'a>(
+    md: &mut String,
+    figures: &mut Vec<Figure>,
+    gases: &'a [GasPoints<'a>],
+    cases: &[&'a Group<'a>],
+) {
     let mut singles: Vec<(String, &Group)> = Vec::new();
     for (i, (label, gs)) in gases.iter().enumerate() {
         if !gs[0].p_max().is_finite() {
@@ -192,27 +260,21 @@ pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
             continue;
         }
         let file = format!("expansion_left_fraction_{i}.svg");
-        figures.push(Figure {
-            file: file.clone(),
-            chart: scaled(gs, label),
-        });
         let _ = writeln!(
             md,
             "![{label}: ensemble mean of the left fraction at each p_max (band: ±1 standard error) \
              against t p_max / m, with the collisionless and diffusive predictions (dashed).]({file})\n"
         );
+        let chart = scaled(gs, label);
+        figures.push(Figure { file, chart });
     }
     singles.extend(
-        expansion_cases
+        cases
             .iter()
             .map(|g| (g.case.clone().unwrap_or_default(), *g)),
     );
     for (name, g) in &singles {
         let file = format!("expansion_left_fraction_{name}.svg");
-        figures.push(Figure {
-            file: file.clone(),
-            chart: single(g),
-        });
         let _ = writeln!(
             md,
             "![{}: ensemble mean of the left fraction (band: ±1 standard error over {} runs) and \
@@ -220,30 +282,31 @@ pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
             g.label(),
             g.outs.len()
         );
+        figures.push(Figure {
+            file,
+            chart: single(g),
+        });
     }
+}
 
-    // Every point and case.
-    md.push_str(
+/// Every point and case, and which of them each prediction describes.
+fn points_table<'a>(groups: impl Iterator<Item = &'a &'a Group<'a>>) -> String {
+    let mut md = String::from(
         "| gas | d | Kn = λ/L | runs | τ (runs reaching it) | τ of the mean curve | τ free | τ / τ free | \
          max \\|z\\| vs free, t ≤ 3 τ free | same vs free Maxwellian at the same kT | τ diffusive (Enskog D) | late mean (z vs ½) | \
          late variance × 4N (z vs S(0)) | S(0) | CPU s | collisions |\n\
          |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
-    let (mut holds, mut fails) = (Vec::new(), Vec::new());
-    for g in sweep.iter().chain(&expansion_cases) {
+    let (mut free, mut diffusive) = (Verdicts::default(), Verdicts::default());
+    for g in groups {
         let tau = g.stat("relaxation_time");
         let tau_free = g.tau_free();
+        let tau_diffusive = g.stat("relaxation_time_diffusive").mean;
         let zf = free_z(g, g.free());
-        let zt = free_z(g, g.free_thermal());
         let kn = g.stat("knudsen").mean;
         let named = format!("{} (Kn = {})", g.label(), num(kn));
-        if zf.is_finite() {
-            if zf < 4.0 {
-                holds.push(named);
-            } else {
-                fails.push(named);
-            }
-        }
+        free.add(named.clone(), zf);
+        diffusive.add(named, z(tau.mean, tau_diffusive, tau.stderr));
         let late = g.stat("late_mean");
         let var = g.stat("late_variance_ratio");
         let s0 = g.stat("compressibility").mean;
@@ -261,107 +324,39 @@ pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
             num(tau_free),
             num(tau.mean / tau_free),
             num(zf),
-            num(zt),
-            num(g.stat("relaxation_time_diffusive").mean),
+            num(free_z(g, g.free_thermal())),
+            num(tau_diffusive),
             pm(late.mean, late.stderr),
             num(z(late.mean, 0.5, late.stderr)),
             pm(var.mean, var.stderr),
             num(z(var.mean, s0, var.stderr)),
             num(s0),
-            num(g.cpu_seconds()),
-            count(g.collisions()),
+            num(g.outs.iter().map(|o| o.cpu_seconds).sum()),
+            count(g.outs.iter().map(|o| o.collisions).sum()),
         );
     }
-    md.push('\n');
-    let list = |v: &[String]| {
-        if v.is_empty() {
-            "none".to_string()
-        } else {
-            v.join("; ")
-        }
-    };
     let _ = writeln!(
         md,
-        "The collisionless curve holds within 4 of its standard errors at every sample up to 3 τ free at: {}. \
-         It does not at: {}.\n",
-        list(&holds),
-        list(&fails)
+        "\nThe collisionless curve holds within {0} of its standard errors at every sample up to {1} τ free at: {2}. \
+         It does not at: {3}. The diffusive relaxation time (Enskog D) is within {0} standard errors of the measured τ at: {4}. \
+         It is not at: {5}.\n",
+        num(AGREE),
+        num(COMPARED),
+        list(&free.agree),
+        list(&free.differ),
+        list(&diffusive.agree),
+        list(&diffusive.differ)
     );
-
-    // Profiles.
-    for g in &profile_cases {
-        let name = g.case.clone().unwrap_or_default();
-        if let Some((fs, text)) = profiles::section(g, &name) {
-            let _ = writeln!(md, "**Profiles during the expansion**, case `{name}`:\n");
-            md.push_str(&text);
-            figures.extend(fs);
-        }
-    }
-
-    md.push_str(METHODS);
-    Ok(ReportSection {
-        title: "Expansion of the gas".into(),
-        markdown: md,
-        figures,
-        presents: RESULTS.iter().map(|r| r.to_string()).collect(),
-    })
+    md
 }
 
-const INTRO: &str = "> Build a simulation where all particles are randomly distributed but only on the left half of \
-the box. The right half of the box is empty. Momenta of the particles can be randomly distributed. […] As a \
-function of time, count the number of particles on each side of the box, and plot them on the same figure. How \
-long does it take to reach equilibrium? Does it change, if you change the maximum initial momentum? (Imperial, \
-\"Expansion of the gas\"; its particles start with \"random momenta in an interval [−p_max, p_max]\".)\n\n\
-Particles start at random in the left half of a box with walls, the right half empty, each momentum component \
-uniform in [−p_max, p_max] (the cases: Maxwellian). Were there no collisions, each particle would bounce between \
-the walls for ever at its own speed, and the fraction on the left would follow exactly from the starting \
-distribution (the collisionless prediction, dashed). **Yes, it changes: τ ∝ 1/p_max, at every density.** Hard \
-particles have no energy scale: multiplying every velocity by λ gives the same trajectories run λ times faster, \
-so every time, collisionless or not, scales as m/p_max; the sweep measures the power. What density changes is \
-the shape: a gas whose mean free path exceeds the box (Knudsen number Kn = λ/L > 1) follows the collisionless \
-curve; a dense one is a fluid, which pushes itself into the empty half as a rarefaction wave at the speed of \
-sound, fills it sooner than free flight, overshoots and sloshes. Diffusion (each particle a random walker with \
-the self-diffusion coefficient D) would be slower still by ~1/Kn and does not describe it: the gas's momentum is \
-conserved, so density spreads by flow, not by diffusion (docs/expansion.md).\n\n";
+#[cfg(test)]
+mod tests {
+    use crate::stats::fill::unfilled;
 
-const METHODS: &str = "\n### How each number is measured\n\n\
-**Relaxation time** (`relaxation_time`): per run, the first time the excess f − ½ of the left fraction falls \
-to 1/e of its value at the first sample (½), interpolated linearly between the samples around the crossing. \
-A first passage rather than an exponential fit: the collisionless decay is not exponential, a fluid's \
-undershoots ½ and sloshes, and the first passage measures both the same way; it needs no fit window and the \
-theory gives it exactly. Its cost: the fraction fluctuates by about 1/(2√N) in each run, which can bring a \
-crossing forward in small systems; `τ of the mean curve` is the same first passage of the ensemble mean, \
-whose noise is smaller by √runs. `relaxation_time_free` is the first passage of the collisionless curve \
-(exact), `relaxation_ratio` the measured over it. The power a of τ ∝ p_max^a is the slope of ln τ against \
-ln p_max weighted by the runs' standard errors.\n\n\
-**Collisionless curve** (`theory::expansion`): a particle of radius a moves its centre in [a, L − a]; \
-unfolding the reflections, its image moves freely on a line, and it is on the left when the image modulo \
-2(L − 2a) is within (L − 2a)/2 of a multiple of 2(L − 2a). Averaging over the start (uniform along x in \
-[a, L/2 − a]) and v_x gives a sum over images in closed form: error functions for Maxwellian v_x, parabolas \
-for uniform v_x (only images within reach of the fastest particle count), and, for Maxwellian v_x at late \
-times, a sum of Fourier modes. The `max |z|` column is the largest deviation of the mean curve from it over \
-the samples up to 3 τ free, in units of the standard error the collisionless gas itself predicts for a mean \
-over the runs, √(f(1 − f)/(N runs)). The next column compares with free particles whose velocities are \
-Maxwellian at the start's kT (m⟨v_x²⟩ = p_max²/3): it says whether the data tell the two starts apart (the \
-uniform start's curve rings about ½, its modes decaying only as 1/t), and whether collisions too rare to \
-change the flight have made the velocities Maxwellian (the curve would then tend to this one).\n\n\
-**Diffusive curve** (`relaxation_time_diffusive`, `diffusion_enskog`): the diffusion equation in the same box \
-with no flux through the walls, from the same start: the same modes, each damped by exp(−D k² t). D is \
-Enskog's self-diffusion coefficient (dilute Chapman-Enskog value over the contact value of g; disks: Gass \
-1971 with Henderson's g, spheres: Chapman & Cowling with Carnahan-Starling's) at the final density and kT = \
-m⟨v_x²⟩; `diffusion_measured` is the slope of the mean-squared displacement along y over 2 in the case that \
-records it.\n\n\
-**Settled split** (`late_mean`, `late_variance_ratio`): over the last half of each run, the mean of the left \
-fraction (theory ½ by symmetry) and its mean square deviation from ½ over the samples times 4N: 1 for \
-independent particles (binomial). Hard particles exclude each other, so a denser gas fluctuates less: for half \
-of a large closed box the ratio is the structure factor S(0) = kT ∂n/∂P (Tonks, Henderson, Carnahan-Starling \
-at the packing fraction of the whole box; `compressibility`). The z columns are (mean − theory) / standard \
-error over the runs (the summary's z). Both need the last half of the run to lie well after τ and the \
-sloshing to have died out.\n\n\
-**Profiles** (`temperature_x`): in 16 slabs along x at each sample, the number of particles and kT of their \
-motion about the slab's mean velocity; the ensemble mean of the count, and kT pooled over the runs with \
-weights n − 1. Dashed: the adiabat of the hard-particle fluid in local equilibrium from the start (packing \
-fraction 2η̄) to each slab's density, kT/kT₀ = (n/n₀)^(2/d) exp((2/d)(F(η) − F(η₀))), F(η) = ∫(Z − 1)/η dη \
-from the equation of state; the table adds the ideal gas's (n/n₀)^(2/d). The last column is the kinetic energy of the motion about the slabs' mean velocities \
-over the total: below 1 when the gas flows (at t = 0 by about slabs/N, each slab's own centre-of-mass \
-motion).\n";
+    #[test]
+    fn every_placeholder_is_filled() {
+        assert!(unfilled(&super::methods()).is_empty());
+        assert!(unfilled(super::INTRO).is_empty());
+    }
+}

@@ -14,12 +14,8 @@ pub const NAMES: [&str; 3] = [
     "Spheres (3D, periodic)",
 ];
 
-fn curve(top: f64, f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
-    curve_from(0.0, top, f)
-}
-
 /// `f` at 201 packing fractions from `first` to `top`.
-fn curve_from(first: f64, top: f64, f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
+fn curve(first: f64, top: f64, f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
     (0..=200)
         .map(|k| {
             let eta = first + (top - first) * k as f64 / 200.0;
@@ -29,7 +25,7 @@ fn curve_from(first: f64, top: f64, f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
 }
 
 /// The bulk points of dimension `d`: periodic boxes, and rods.
-fn bulk(all: &[Point], d: usize) -> Vec<&Point> {
+pub fn bulk(all: &[Point], d: usize) -> Vec<&Point> {
     all.iter()
         .filter(|p| p.dimension == d && (d == 1 || !p.walls))
         .collect()
@@ -37,13 +33,8 @@ fn bulk(all: &[Point], d: usize) -> Vec<&Point> {
 
 pub fn z_chart(all: &[Point]) -> ChartSpec {
     let top = all.iter().map(|p| p.eta).fold(0.0, f64::max) * 1.02;
-    let mut layers = vec![Layer::Line {
-        points: vec![(0.0, 1.0), (top, 1.0)],
-        paint: Paint::solid((0, 0, 0)),
-        width: 1,
-        dashed: true,
-        label: Some("ideal gas".into()),
-    }];
+    let ideal = vec![(0.0, 1.0), (top, 1.0)];
+    let mut layers = vec![line(ideal, BLACK, true, Some("ideal gas".into()))];
     for d in 1..=3 {
         let pts = bulk(all, d);
         if pts.is_empty() {
@@ -57,13 +48,9 @@ pub fn z_chart(all: &[Point]) -> ChartSpec {
             let end = reach
                 .min(e.holds_below.max(0.3) + 0.05)
                 .min(e.defined_below);
-            layers.push(Layer::Line {
-                points: curve(end, e.z),
-                paint: paint.faded(if i == 0 { 1.0 } else { 0.6 }),
-                width: 1,
-                dashed: i > 0,
-                label: Some(format!("{}D: {}", d, e.name)),
-            });
+            let faded = paint.faded(if i == 0 { 1.0 } else { 0.6 });
+            let label = Some(format!("{}D: {}", d, e.name));
+            layers.push(line(curve(0.0, end, e.z), faded, i > 0, label));
         }
         markers(&mut layers, &pts, paint, NAMES[d - 1], |p| {
             (p.z.mean, p.error().0)
@@ -97,15 +84,10 @@ pub fn deviation_chart(all: &[Point]) -> Option<ChartSpec> {
         let paint = colour(d - 1);
         let reach = pts.iter().map(|p| p.eta).fold(0.0, f64::max) * 1.02;
         for e in &eqs[1..] {
-            layers.push(Layer::Line {
-                points: curve(reach.min(e.holds_below + 0.05), |eta| {
-                    (e.z)(eta) / (reference.z)(eta) - 1.0
-                }),
-                paint: paint.faded(0.6),
-                width: 1,
-                dashed: true,
-                label: Some(format!("{}D: {}", d, e.name)),
-            });
+            let over = |eta| (e.z)(eta) / (reference.z)(eta) - 1.0;
+            let points = curve(0.0, reach.min(e.holds_below + 0.05), over);
+            let label = Some(format!("{}D: {}", d, e.name));
+            layers.push(line(points, paint.faded(0.6), true, label));
         }
         markers(&mut layers, &pts, paint, NAMES[d - 1], |p| {
             let r = (reference.z)(p.eta);
@@ -132,13 +114,13 @@ pub fn time_chart(examples: &[(&Point, &str)]) -> ChartSpec {
             continue;
         };
         let mean = v.iter().sum::<f64>() / v.len() as f64;
-        layers.push(Layer::Line {
-            points: t.iter().zip(v).map(|(t, v)| (*t, v / mean)).collect(),
-            paint: colour(i).faded(0.7),
-            width: 1,
-            dashed: false,
-            label: Some(label.to_string()),
-        });
+        let points = t.iter().zip(v).map(|(t, v)| (*t, v / mean)).collect();
+        layers.push(line(
+            points,
+            colour(i).faded(0.7),
+            false,
+            Some(label.to_string()),
+        ));
     }
     ChartSpec {
         title: "Pressure against time (one replica each, per sampling interval)".into(),
@@ -154,37 +136,17 @@ pub fn finite_size_chart(fits: &[Fit]) -> ChartSpec {
     for (i, f) in fits.iter().enumerate() {
         let paint = colour(i);
         let r = (equations::of(f.dimension)[0].z)(f.eta);
+        let rel = |z: f64| z / r - 1.0;
         let xmax = f.data.iter().map(|d| 1.0 / d.0 as f64).fold(0.0, f64::max);
-        layers.push(Layer::Line {
-            points: (0..=20)
-                .map(|k| {
-                    let x = xmax * k as f64 / 20.0;
-                    (x, (f.z_inf + f.slope * x) / r - 1.0)
-                })
-                .collect(),
-            paint: paint.faded(0.6),
-            width: 1,
-            dashed: true,
-            label: None,
-        });
+        let xs = (0..=20).map(|k| xmax * k as f64 / 20.0);
+        let fitted = xs.map(|x| (x, rel(f.z_inf + f.slope * x))).collect();
+        layers.push(line(fitted, paint.faded(0.6), true, None));
+        // The points at 1/N, and the extrapolation at 0.
+        let bars = f.data.iter().map(|&(n, z, e)| (1.0 / n as f64, z, e));
+        let bars = bars.chain([(0.0, f.z_inf, f.z_inf_err)]);
         layers.push(Layer::ErrorBars {
-            bars: f
-                .data
-                .iter()
-                .map(|&(n, z, e)| {
-                    (
-                        1.0 / n as f64,
-                        (z - e) / r - 1.0,
-                        z / r - 1.0,
-                        (z + e) / r - 1.0,
-                    )
-                })
-                .chain(std::iter::once((
-                    0.0,
-                    (f.z_inf - f.z_inf_err) / r - 1.0,
-                    f.z_inf / r - 1.0,
-                    (f.z_inf + f.z_inf_err) / r - 1.0,
-                )))
+            bars: bars
+                .map(|(x, z, e)| (x, rel(z - e), rel(z), rel(z + e)))
                 .collect(),
             paint,
         });
@@ -192,19 +154,14 @@ pub fn finite_size_chart(fits: &[Fit]) -> ChartSpec {
             points: f
                 .data
                 .iter()
-                .map(|&(n, z, _)| (1.0 / n as f64, z / r - 1.0))
+                .map(|&(n, z, _)| (1.0 / n as f64, rel(z)))
                 .collect(),
             paint,
             label: Some(format!("{}D, η = {:.3}", f.dimension, f.eta)),
         });
     }
-    layers.push(Layer::Line {
-        points: vec![(0.0, 0.0), (1.0 / 64.0, 0.0)],
-        paint: Paint::solid((0, 0, 0)),
-        width: 1,
-        dashed: true,
-        label: Some("reference equation".into()),
-    });
+    let zero = vec![(0.0, 0.0), (1.0 / 64.0, 0.0)];
+    layers.push(line(zero, BLACK, true, Some("reference equation".into())));
     ChartSpec {
         title: "Finite size: Z against 1/N, extrapolated to N → ∞ (at 1/N = 0)".into(),
         x_label: "1/N".into(),
@@ -221,23 +178,14 @@ pub fn dense_disks_chart(pts: &[&Point]) -> ChartSpec {
     let paint = colour(1);
     // A line joins the means; the fluid's equation (at N → ∞) is drawn up to
     // where the fluid ends, not beyond: it knows nothing of the hexatic phase.
-    let mut layers = vec![Layer::Line {
-        points: pts.iter().map(|p| (p.eta, p.z.mean * rho(p.eta))).collect(),
-        paint: paint.faded(0.5),
-        width: 1,
-        dashed: true,
-        label: None,
-    }];
+    let means = pts.iter().map(|p| (p.eta, p.z.mean * rho(p.eta))).collect();
+    let mut layers = vec![line(means, paint.faded(0.5), true, None)];
     let fluid = &equations::of(2)[0];
     let first = pts.iter().map(|p| p.eta).fold(f64::INFINITY, f64::min);
     if first < DISK_FLUID_ENDS {
-        layers.push(Layer::Line {
-            points: curve_from(first, DISK_FLUID_ENDS, |eta| (fluid.z)(eta) * rho(eta)),
-            paint: colour(0),
-            width: 1,
-            dashed: false,
-            label: Some(format!("{} (fluid, N → ∞)", fluid.name)),
-        });
+        let points = curve(first, DISK_FLUID_ENDS, |eta| (fluid.z)(eta) * rho(eta));
+        let label = Some(format!("{} (fluid, N → ∞)", fluid.name));
+        layers.push(line(points, colour(0), false, label));
     }
     markers(&mut layers, pts, paint, "disks", |p| {
         (p.z.mean * rho(p.eta), p.error().0 * rho(p.eta))
@@ -251,6 +199,22 @@ pub fn dense_disks_chart(pts: &[&Point]) -> ChartSpec {
         y_label: "βPσ²".into(),
         layers,
         ..Default::default()
+    }
+}
+
+const BLACK: Paint = Paint {
+    rgb: (0, 0, 0),
+    alpha: 1.0,
+};
+
+/// A line one pixel wide.
+fn line(points: Vec<(f64, f64)>, paint: Paint, dashed: bool, label: Option<String>) -> Layer {
+    Layer::Line {
+        points,
+        paint,
+        width: 1,
+        dashed,
+        label,
     }
 }
 

@@ -1,5 +1,6 @@
 //! The equations of state each dimension is compared with: the first is the
 //! run's theory in the summary (its z-score), the others are shown beside it.
+//! Where each holds is checked in docs/pressure.md.
 
 use crate::theory::{
     carnahan_starling, carnahan_starling_kolafa, disk_virial, hansen_goos, henderson,
@@ -18,71 +19,46 @@ pub struct Equation {
     pub defined_below: f64,
 }
 
-const RODS: &[Equation] = &[Equation {
-    name: "Tonks (exact)",
-    z: tonks::z,
-    holds_below: 1.0,
-    defined_below: f64::INFINITY,
-}];
+const fn eq(name: &'static str, z: fn(f64) -> f64, holds_below: f64) -> Equation {
+    Equation {
+        name,
+        z,
+        holds_below,
+        defined_below: f64::INFINITY,
+    }
+}
+
+const RODS: &[Equation] = &[eq("Tonks (exact)", tonks::z, 1.0)];
 
 const DISKS: &[Equation] = &[
+    // Fitted to the fluid's simulations up to 0.707 (rho sigma^2 = 0.90;
+    // beyond, its x^57 term explodes), the last 0.008 of which may keep
+    // finite-size effects; the fluid ends at 0.700. Checked here to 0.68:
+    // at 0.69 1024 disks sit 0.1 % above it.
     Equation {
-        name: "Kolafa-Rottner 2006",
-        // Fitted to the fluid's simulations up to 0.707, the last 0.008 of
-        // which may keep finite-size effects; the fluid ends at 0.700.
-        // Checked here to 0.68 (docs/pressure.md); at 0.69 1024 disks sit
-        // 0.1 % above it.
-        z: kolafa_rottner::z,
-        holds_below: 0.681,
-        // Fitted to rho sigma^2 = 0.90; beyond, its x^57 term explodes.
         defined_below: 0.707,
+        ..eq("Kolafa-Rottner 2006", kolafa_rottner::z, 0.681)
     },
-    Equation {
-        name: "virial series to B10 + tail",
-        // The estimated tail is 5e-5 of Z at 0.3, 7e-4 at 0.4, 0.6 % at 0.5.
-        z: disk_virial::resummed,
-        holds_below: 0.4,
-        defined_below: f64::INFINITY,
-    },
-    Equation {
-        name: "Henderson 1975",
-        // 2.5e-4 above the resummed series at 0.3, 1.4e-3 at 0.4.
-        z: henderson::z,
-        holds_below: 0.35,
-        defined_below: f64::INFINITY,
-    },
+    // The estimated tail is 5e-5 of Z at 0.3, 7e-4 at 0.4, 0.6 % at 0.5.
+    eq("virial series to B10 + tail", disk_virial::resummed, 0.4),
+    // 2.5e-4 above the resummed series at 0.3, 1.4e-3 at 0.4.
+    eq("Henderson 1975", henderson::z, 0.35),
 ];
 
 const SPHERES: &[Equation] = &[
-    Equation {
-        name: "Hansen-Goos 2016",
-        // Built on B2-B10 and fitted to the fluid's simulations; the
-        // stable fluid ends at freezing.
-        z: hansen_goos::z,
-        holds_below: 0.494,
-        defined_below: f64::INFINITY,
-    },
-    Equation {
-        name: "Carnahan-Starling-Kolafa",
-        // Within 1e-4 of Hansen-Goos up to 0.4, 6e-4 below it at 0.49.
-        z: carnahan_starling_kolafa::z,
-        holds_below: 0.494,
-        defined_below: f64::INFINITY,
-    },
-    Equation {
-        name: "virial series to B10 + tail",
-        // The estimated tail is 3e-4 of Z at 0.3, 1.2e-3 at 0.35.
-        z: sphere_virial::resummed,
-        holds_below: 0.35,
-        defined_below: f64::INFINITY,
-    },
-    Equation {
-        name: "Carnahan-Starling",
-        // 1.3e-3 below Hansen-Goos at 0.2, 2.5e-3 at 0.3.
-        z: carnahan_starling::z,
-        holds_below: 0.2,
-        defined_below: f64::INFINITY,
-    },
+    // Built on B2-B10 and fitted to the fluid's simulations; the stable
+    // fluid ends at freezing.
+    eq("Hansen-Goos 2016", hansen_goos::z, 0.494),
+    // Within 1e-4 of Hansen-Goos up to 0.4, 6e-4 below it at 0.49.
+    eq(
+        "Carnahan-Starling-Kolafa",
+        carnahan_starling_kolafa::z,
+        0.494,
+    ),
+    // The estimated tail is 3e-4 of Z at 0.3, 1.2e-3 at 0.35.
+    eq("virial series to B10 + tail", sphere_virial::resummed, 0.35),
+    // 1.3e-3 below Hansen-Goos at 0.2, 2.5e-3 at 0.3.
+    eq("Carnahan-Starling", carnahan_starling::z, 0.2),
 ];
 
 /// The equations for dimension `d` (1, 2 or 3), the summary's first.

@@ -1,20 +1,10 @@
 //! Z against 1/N: points of one dimension and packing fraction (periodic
 //! boxes) with different N, fitted with Z(N) = Z_inf + b/N by weighted
-//! least squares, and Z_inf compared with the reference equation.
-//!
-//! Why 1/N: for hard bodies the simulated ensemble (fixed energy, zero total
-//! momentum) has the canonical configurations at the same N and V (the
-//! potential energy is zero wherever it is defined, so fixing the energy
-//! only fixes the momenta), and with kT = 2K/(d(N - 1)) the collision
-//! virial has its canonical value; the one ensemble term, the ideal part
-//! (N - 1) kT instead of N kT, is corrected in `measure`. What is left is
-//! the canonical finite-size effect of a periodic box of fixed N, whose
-//! density cannot fluctuate on the box's scale: of order 1/N.
-//!
-//! The straight line is the leading term. When the smallest box already
-//! shows the next one (the line's χ² beyond its 99 % point), that box is
-//! left out and the line refitted through the larger ones; the report says
-//! which and gives the χ² it had.
+//! least squares, and Z_inf compared with the reference equation. The
+//! canonical finite-size effect of a periodic box of fixed N is of order
+//! 1/N (methods.md, "Ensemble"); when the smallest box already shows the
+//! next term (the line's χ² beyond its 99 % point), it is left out and the
+//! line refitted through the larger ones.
 
 use super::points::Point;
 use crate::stats::groups::first_seen;
@@ -103,14 +93,18 @@ fn fit(g: &[&Point]) -> Fit {
 
 #[cfg(test)]
 mod tests {
+    use super::super::points::tests::point;
+
+    /// Points of disks at η = 0.3 with Z(N) and error `err` at each N.
+    fn points(ns: &[usize], z: impl Fn(f64) -> f64, err: f64) -> Vec<super::Point> {
+        ns.iter()
+            .map(|&n| point(2, n, 0.3, z(n as f64), err))
+            .collect()
+    }
+
     #[test]
     fn exact_line_through_two_points() {
-        // Z(N) = 2 - 0.7/N at N = 64 and 1024, equal errors.
-        let pts: Vec<super::Point> = [64usize, 1024]
-            .iter()
-            .map(|&n| super::super::points::tests::point(2, n, 0.3, 2.0 - 0.7 / n as f64, 1e-3))
-            .collect();
-        let f = super::fits(&pts);
+        let f = super::fits(&points(&[64, 1024], |n| 2.0 - 0.7 / n, 1e-3));
         assert_eq!(f.len(), 1);
         assert!((f[0].z_inf - 2.0).abs() < 1e-12);
         assert!((f[0].slope + 0.7).abs() < 1e-9);
@@ -125,20 +119,13 @@ mod tests {
         // Z(N) = 2 - 0.7/N - 150/N^2: the line through all three has
         // chi2 = 16 for 1 dof; the line through 256 and 1024 is kept.
         let z = |n: f64| 2.0 - 0.7 / n - 150.0 / (n * n);
-        let pts: Vec<super::Point> = [64usize, 256, 1024]
-            .iter()
-            .map(|&n| super::super::points::tests::point(2, n, 0.3, z(n as f64), 1e-3))
-            .collect();
-        let f = super::fits(&pts);
+        let f = super::fits(&points(&[64, 256, 1024], z, 1e-3));
         assert_eq!(f[0].left_out.len(), 1);
         assert_eq!(f[0].left_out[0].0, 64);
         assert_eq!(f[0].data.len(), 2);
         assert!((f[0].z_inf - 2.0).abs() < 6e-4, "{}", f[0].z_inf);
         // Within the noise the line through all three is kept.
-        let pts: Vec<super::Point> = [64usize, 256, 1024]
-            .iter()
-            .map(|&n| super::super::points::tests::point(2, n, 0.3, z(n as f64), 1e-2))
-            .collect();
-        assert!(super::fits(&pts)[0].left_out.is_empty());
+        let f = super::fits(&points(&[64, 256, 1024], z, 1e-2));
+        assert!(f[0].left_out.is_empty());
     }
 }

@@ -3,17 +3,14 @@
 //! compressibility factor Z = beta P / rho against the packing fraction,
 //! beside the exact (rods) and published (disks, spheres) equations.
 
-mod blocks;
 mod charts;
 mod equations;
-mod equilibration;
 mod error;
 mod finite_size;
 mod measure;
 mod packing;
 mod phases;
 mod points;
-mod rods;
 mod section;
 
 use super::{Finished, Start, Study};
@@ -130,18 +127,13 @@ impl Study for Pressure {
         if result != "Z" {
             return None;
         }
-        let scene = crate::scene::resolve(&d.scene).ok()?;
-        let eta = packing::of_scene(&scene)?;
-        let dimension = scene.dimension().ok()?;
+        let s = packing::described(d)?;
+        let eta = packing::of_scene(&s.scene)?;
         // Walls in 2D and 3D add a surface term that no bulk equation has.
-        let walled = scene
-            .boundary
-            .as_ref()
-            .is_none_or(|b| b.contains(&crate::model::scene::Boundary::Walls));
-        if dimension > 1 && walled {
+        if s.dimension > 1 && s.walls {
             return None;
         }
-        Some((equations::of(dimension)[0].z)(eta))
+        Some((equations::of(s.dimension)[0].z)(eta))
     }
     fn error_model(&self, d: &Descriptor) -> Option<super::ErrorModel> {
         error::error_model(d)

@@ -2,7 +2,8 @@
 //! measured) and of a scene as described (what theory is asked at).
 
 use crate::engine::Particle;
-use crate::model::scene::{Drawn, SceneSpec};
+use crate::model::descriptor::Descriptor;
+use crate::model::scene::{Boundary, Drawn, SceneSpec};
 use std::f64::consts::PI;
 
 /// Volume of a ball of radius `r` in `d` dimensions (1: a rod's length).
@@ -34,6 +35,27 @@ pub fn of_scene(scene: &SceneSpec) -> Option<f64> {
         filled += s.count as f64 * ball(d, r);
     }
     Some(filled / volume)
+}
+
+/// A descriptor's scene (its preset resolved) and what the analysis reads
+/// of it without building it.
+pub struct Described {
+    pub scene: SceneSpec,
+    pub dimension: usize,
+    pub particles: usize,
+    /// Whether any axis has walls (the default): then Z is the walls'.
+    pub walls: bool,
+}
+
+pub fn described(d: &Descriptor) -> Option<Described> {
+    let scene = crate::scene::resolve(&d.scene).ok()?;
+    let walls = (scene.boundary.as_ref()).is_none_or(|b| b.contains(&Boundary::Walls));
+    Some(Described {
+        dimension: scene.dimension().ok()?,
+        particles: scene.species.iter().map(|s| s.count).sum(),
+        walls,
+        scene,
+    })
 }
 
 #[cfg(test)]

@@ -1,23 +1,17 @@
 //! The sweep points as the report sees them: what each point's replicas
 //! measured, pooled, and how the point was started and equilibrated.
 
+use super::packing;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
-use crate::model::scene::{Boundary, Placement};
+use crate::model::scene::Placement;
 use crate::stats::summary::Stats;
 use std::collections::BTreeMap;
 
-/// Replicas from which their spread alone is the error bar. With fewer the
-/// error bar is the larger of that spread and the runs' own error (block
-/// averages; for rods the exact wall-hit model): the standard error from
-/// n replicas is itself uncertain by 1/sqrt(2(n - 1)), 41 % for 4, and a
-/// mean over few replicas is t-distributed with n - 1 degrees of freedom,
-/// so 4 replicas that happen to agree closely give z-scores of 5 or more
-/// about 1 % of the time. The runs' own error rests on hundreds of blocks
-/// per run (or is exact), so where it is larger the replicas agreed by luck.
-/// From 16 replicas (a standard error good to 18 %) the spread is used as
-/// it is: it also covers what a single run's blocks cannot see (slow modes,
-/// different starts).
+/// Replicas from which their spread alone is the error bar (a standard
+/// error good to 18 %, which also covers what a run's blocks cannot see).
+/// With fewer, 4 replicas that agree by luck give |z| of 5 or more about 1 %
+/// of the time, so the runs' own error is used where it is larger.
 pub const TRUSTED_REPLICAS: u64 = 16;
 
 /// One sweep point.
@@ -96,7 +90,7 @@ pub fn points(runs: &[(RunSpec, RunOutput)]) -> Vec<Point> {
 
 fn point(rs: &[&(RunSpec, RunOutput)]) -> Option<Point> {
     let d = &rs[0].0.descriptor;
-    let scene = crate::scene::resolve(&d.scene).ok()?;
+    let s = packing::described(d)?;
     // The measured values of a result (a run writes NaN where it could not measure it).
     let of = |name: &str| -> Vec<f64> {
         rs.iter()
@@ -104,18 +98,14 @@ fn point(rs: &[&(RunSpec, RunOutput)]) -> Option<Point> {
             .filter(|v| !v.is_nan())
             .collect()
     };
+    // A result only if every run measured it.
+    let every = |name: &str| Some(of(name)).filter(|v| v.len() == rs.len());
     let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
-    let stats_if = |name: &str| {
-        let v = of(name);
-        (v.len() == rs.len()).then(|| Stats::of(&v))
-    };
-    let particles: usize = scene.species.iter().map(|s| s.count).sum();
-    let combined = |v: Vec<f64>| {
-        if v.len() == rs.len() {
+    // The runs' standard errors combined into that of their mean.
+    let combined = |name: &str| {
+        every(name).map_or(f64::NAN, |v| {
             v.iter().map(|s| s * s).sum::<f64>().sqrt() / rs.len() as f64
-        } else {
-            f64::NAN
-        }
+        })
     };
     let runs = rs.len() as f64;
     let duration = d.run.duration.unwrap_or(f64::NAN);
@@ -125,50 +115,40 @@ fn point(rs: &[&(RunSpec, RunOutput)]) -> Option<Point> {
         .filter_map(|(_, o)| Some(o.scalar("Z_wall")? - o.scalar("Z_virial")?))
         .filter(|v| !v.is_nan())
         .collect();
-    let walls = scene
-        .boundary
-        .as_ref()
-        .is_none_or(|b| b.contains(&Boundary::Walls));
     let example = rs[0].1.series.iter().find_map(|s| {
         ["wall_pressure", "virial_pressure"]
             .contains(&s.observable.as_str())
             .then(|| (s.observable.clone(), s.t.clone(), s.value.clone()))
     });
     Some(Point {
-        dimension: scene.dimension().ok()?,
-        particles,
+        dimension: s.dimension,
+        particles: s.particles,
         eta: mean(&of("packing_fraction")),
-        walls,
-        start: match scene.placement {
+        walls: s.walls,
+        start: match s.scene.placement {
             Some(Placement::Compress { .. }) => "compressed",
             Some(Placement::Lattice { .. }) => "lattice",
             _ => "random",
         },
         z: Stats::of(&of("Z")),
-        block_stderr: combined(of("Z_block_stderr")),
-        run_stderr: combined(of("Z_run_stderr")),
-        run_basis: if scene.dimension().ok()? == 1 && walls {
+        block_stderr: combined("Z_block_stderr"),
+        run_stderr: combined("Z_run_stderr"),
+        run_basis: if s.dimension == 1 && s.walls {
             "wall hits"
         } else {
             "blocks"
         },
         block_time: mean(&of("block_time")),
-        block_doubling: {
-            let v = of("block_doubling");
-            if v.len() == rs.len() {
-                v.iter().copied().fold(0.0, f64::max)
-            } else {
-                f64::NAN
-            }
-        },
+        block_doubling: every("block_doubling")
+            .map_or(f64::NAN, |v| v.iter().copied().fold(0.0, f64::max)),
         equilibrate: d.run.equilibrate,
         cut: mean(&of("equilibration_cut")),
         drift: of("Z_drift").iter().map(|x| x.abs()).fold(0.0, f64::max),
-        collision_rate: collisions / (particles as f64 * duration * runs),
-        prepare_per_particle: mean(&of("prepare_collisions")) / particles as f64,
+        collision_rate: collisions / (s.particles as f64 * duration * runs),
+        prepare_per_particle: mean(&of("prepare_collisions")) / s.particles as f64,
         wall_minus_virial: (paired.len() == rs.len()).then(|| Stats::of(&paired)),
-        z_wall: stats_if("Z_wall"),
-        z_virial: stats_if("Z_virial"),
+        z_wall: every("Z_wall").map(|v| Stats::of(&v)),
+        z_virial: every("Z_virial").map(|v| Stats::of(&v)),
         cpu_seconds: rs.iter().map(|(_, o)| o.cpu_seconds).sum(),
         example,
     })

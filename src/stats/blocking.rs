@@ -67,6 +67,18 @@ pub fn blocked(x: &[f64]) -> Option<Blocked> {
     }
 }
 
+/// The mean of the second half of `x` minus the first's, over the block
+/// error of that difference: about N(0, 1) for a stationary series, large
+/// for one still relaxing. NaN when a half is too short for blocks.
+pub fn drift(x: &[f64]) -> f64 {
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let (a, b) = x.split_at(x.len() / 2);
+    match (blocked(a), blocked(b)) {
+        (Some(ea), Some(eb)) => (mean(b) - mean(a)) / ea.stderr.hypot(eb.stderr),
+        _ => f64::NAN,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -105,5 +117,18 @@ mod tests {
         let expected = (19.0 / n as f64).sqrt();
         assert!(b.plateau && b.length >= 16, "{b:?}");
         assert!((b.stderr / expected - 1.0).abs() < 0.25, "{b:?} {expected}");
+    }
+
+    #[test]
+    fn a_stationary_series_does_not_drift_and_a_ramp_does() {
+        let x = ar1(0.5, 1 << 12, 3);
+        assert!(drift(&x).abs() < 4.0, "{}", drift(&x));
+        let ramp: Vec<f64> = x
+            .iter()
+            .enumerate()
+            .map(|(i, v)| v + i as f64 * 1e-3)
+            .collect();
+        assert!(drift(&ramp) > 10.0, "{}", drift(&ramp));
+        assert!(drift(&x[..40]).is_nan());
     }
 }

@@ -7,9 +7,9 @@
 //! stationary series that minimum falls anywhere by chance, and a cut that
 //! follows the noise biases the mean a little; so a cut is kept only when
 //! what it removes differs from what is left by more than `SIGNIFICANT`
-//! error bars (block averages, `blocks`), else nothing is cut.
+//! error bars (block averages, `blocking`), else nothing is cut.
 
-use super::blocks;
+use super::blocking;
 
 /// Samples per batch.
 pub const BATCH: usize = 5;
@@ -24,7 +24,7 @@ pub fn cut(x: &[f64]) -> usize {
         return 0;
     }
     let (head, rest) = x.split_at(c);
-    let Some(b) = blocks::blocked(rest) else {
+    let Some(b) = blocking::blocked(rest) else {
         return c;
     };
     // The removed part's error, at the correlation the rest shows.
