@@ -1,5 +1,6 @@
 //! Estimators and error bars shared by studies, and numbers as text.
 
+pub mod decay;
 pub mod diffusion;
 pub mod ensemble;
 pub mod error_model;
