@@ -177,30 +177,24 @@ pub fn measure(g: &Geometry, s: &Samples, o: &Options) -> Vec<(&'static str, f64
     // the gases' thermal speed along x, sqrt(<m v_x^2>/<m>).
     let thermal = (2.0 * (s.left[0] + s.right[0]) / (g.dimension as f64 * gas_mass)).sqrt();
     let peak = (2.0 * energy[0] / g.mass).sqrt();
+    // Averaged over one measured period (none if there was none).
+    let tau = relaxation_time(&s.t, &excess, TAU / frequency).unwrap_or(f64::NAN);
+    let periods = measured.as_ref().map_or(0.0, |m| m.periods as f64);
+    let small = start.small_oscillation_omega(Law::Adiabatic);
     let shares: Vec<f64> = s.piston.iter().zip(&s.total).map(|(p, k)| p / k).collect();
     let mut results = vec![
         ("frequency", frequency),
-        (
-            "frequency_periods",
-            measured.as_ref().map_or(0.0, |m| m.periods as f64),
-        ),
+        ("frequency_periods", periods),
         ("omega_adiabatic", omega_ad),
         ("omega_adiabatic_start", start.omega(Law::Adiabatic)),
-        (
-            "omega_adiabatic_small",
-            start.small_oscillation_omega(Law::Adiabatic),
-        ),
+        ("omega_adiabatic_small", small),
         ("omega_adiabatic_inertia", omega_inertia),
         ("omega_isothermal", omega_iso),
         ("frequency_ratio", frequency / omega_ad),
         ("frequency_ratio_inertia", frequency / omega_inertia),
         ("frequency_ratio_isothermal", frequency / omega_iso),
         ("initial_piston_share", s.piston[0] / total),
-        (
-            "relaxation_time",
-            // Averaged over one measured period (none if there was none).
-            relaxation_time(&s.t, &excess, TAU / frequency).unwrap_or(f64::NAN),
-        ),
+        ("relaxation_time", tau),
         ("excess_left", late_mean(&excess, 0.1) / excess[0]),
         ("oscillator_share", late_mean(&energy, o.late) / total),
         ("piston_share", late_mean(&shares, o.late)),
