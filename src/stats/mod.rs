@@ -9,6 +9,7 @@ pub mod format;
 pub mod groups;
 pub mod late;
 pub mod line;
+pub mod line_fit;
 pub mod oscillation;
 pub mod passage;
 pub mod replicas;

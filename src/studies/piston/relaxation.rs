@@ -6,30 +6,12 @@ use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::report::Figure;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
-use crate::stats::line::{Sums, chi_square};
+use crate::stats::line_fit::fit_line;
 use crate::studies::piston::points::{Point, groups};
 use std::fmt::Write;
 
 const ONE_AXIS: &str = include_str!("text/relaxation_1d.md");
 const ACROSS_X: &str = include_str!("text/relaxation_2d.md");
-
-/// Weighted least-squares line through (x, y ± e): slope, its standard
-/// error (scaled up by sqrt(chi^2/dof) when the scatter exceeds the error
-/// bars), intercept and chi^2/dof.
-fn fit_line(points: &[(f64, f64, f64)]) -> Option<(f64, f64, f64, f64)> {
-    if points.len() < 3 {
-        return None;
-    }
-    let sums = Sums::of_errors(points.iter().copied());
-    let det = sums.det();
-    if det.is_nan() || det <= 0.0 {
-        return None;
-    }
-    let (slope, intercept) = (sums.slope(), sums.intercept());
-    let chi2 = chi_square(points, slope, intercept) / (points.len() - 2) as f64;
-    let se = sums.slope_error() * chi2.max(1.0).sqrt();
-    Some((slope, se, intercept, chi2))
-}
 
 /// omega tau_x below which the exchange theory's relaxation time is compared.
 const SLOW_SWING: f64 = 0.5;
@@ -202,20 +184,6 @@ fn unrelaxed(points: &[&Point]) -> String {
 mod tests {
     use super::*;
     use crate::stats::fill::unfilled;
-
-    #[test]
-    fn line_fit_recovers_a_power_law() {
-        let pts: Vec<(f64, f64, f64)> = [10.0f64, 100.0, 1000.0]
-            .iter()
-            .map(|m| (m.ln(), (3.0 * m.powf(1.5)).ln(), 0.1))
-            .collect();
-        let (b, se, a, chi2) = fit_line(&pts).expect("fits");
-        assert!((b - 1.5).abs() < 1e-12 && (a - 3f64.ln()).abs() < 1e-12);
-        assert!(chi2 < 1e-20);
-        // Error of the slope from the error bars alone: 0.1 / sqrt(sum (x - xbar)^2).
-        let spread = 2.0 * (10f64.ln()).powi(2);
-        assert!((se - 0.1 / spread.sqrt()).abs() < 1e-12);
-    }
 
     #[test]
     fn every_placeholder_is_filled() {
