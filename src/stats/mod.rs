@@ -1,6 +1,7 @@
 //! Estimators and error bars shared by studies, and numbers as text.
 
 pub mod blocking;
+pub mod decay;
 pub mod diffusion;
 pub mod ensemble;
 pub mod error_model;
@@ -10,6 +11,7 @@ pub mod goodness;
 pub mod groups;
 pub mod late;
 pub mod line;
+pub mod line_fit;
 pub mod mser;
 pub mod named;
 pub mod oscillation;

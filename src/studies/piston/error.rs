@@ -33,10 +33,8 @@ pub fn error_model(d: &Descriptor) -> Option<ErrorModel> {
         return None;
     }
     let piston = scene.piston.as_ref()?;
-    let side = match piston.per_side {
-        Some(k) => k as f64,
-        None => scene.species.iter().map(|s| s.count).sum::<usize>() as f64 / 2.0,
-    };
+    let all = scene.species.iter().map(|s| s.count).sum::<usize>() as f64;
+    let side = piston.per_side.map_or(all / 2.0, |k| k as f64);
     if side < 1.0 || piston.mass.is_nan() || piston.mass <= 0.0 {
         return None;
     }

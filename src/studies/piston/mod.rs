@@ -4,7 +4,6 @@
 
 mod cases;
 mod error;
-mod estimators;
 mod pictures;
 mod points;
 mod regimes;
@@ -20,11 +19,13 @@ use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::scene::{Built, OnBuilt, on_built};
+use crate::stats::decay::relaxation_time;
 use crate::stats::ensemble::Runs;
+use crate::stats::fill::fill;
+use crate::stats::format::num;
 use crate::stats::oscillation::{Oscillation, oscillation};
 use crate::theory::piston::{Law, PistonSystem};
 use crate::theory::piston_equilibrium::{degrees_of_freedom, oscillator_share};
-use estimators::{late_mean, late_share, relaxation_time};
 use state::{Geometry, Samples};
 use std::f64::consts::TAU;
 
@@ -125,8 +126,8 @@ impl Study for Piston {
     fn error_model(&self, d: &Descriptor) -> Option<super::ErrorModel> {
         error::error_model(d)
     }
-    fn section(&self, _: &Descriptor, runs: &Runs) -> anyhow::Result<ReportSection> {
-        section(runs)
+    fn section(&self, d: &Descriptor, runs: &Runs) -> anyhow::Result<ReportSection> {
+        section(runs, &Options::of(d))
     }
 }
 
@@ -180,32 +181,27 @@ pub fn measure(g: &Geometry, s: &Samples, o: &Options) -> Vec<(&'static str, f64
     // the gases' thermal speed along x, sqrt(<m v_x^2>/<m>).
     let thermal = (2.0 * (s.left[0] + s.right[0]) / (g.dimension as f64 * gas_mass)).sqrt();
     let peak = (2.0 * energy[0] / g.mass).sqrt();
+    // Averaged over one measured period (none if there was none).
+    let tau = relaxation_time(&s.t, &excess, TAU / frequency).unwrap_or(f64::NAN);
+    let periods = measured.as_ref().map_or(0.0, |m| m.periods as f64);
+    let small = start.small_oscillation_omega(Law::Adiabatic);
+    let shares: Vec<f64> = s.piston.iter().zip(&s.total).map(|(p, k)| p / k).collect();
     let mut results = vec![
         ("frequency", frequency),
-        (
-            "frequency_periods",
-            measured.as_ref().map_or(0.0, |m| m.periods as f64),
-        ),
+        ("frequency_periods", periods),
         ("omega_adiabatic", omega_ad),
         ("omega_adiabatic_start", start.omega(Law::Adiabatic)),
-        (
-            "omega_adiabatic_small",
-            start.small_oscillation_omega(Law::Adiabatic),
-        ),
+        ("omega_adiabatic_small", small),
         ("omega_adiabatic_inertia", omega_inertia),
         ("omega_isothermal", omega_iso),
         ("frequency_ratio", frequency / omega_ad),
         ("frequency_ratio_inertia", frequency / omega_inertia),
         ("frequency_ratio_isothermal", frequency / omega_iso),
         ("initial_piston_share", s.piston[0] / total),
-        (
-            "relaxation_time",
-            // Averaged over one measured period (none if there was none).
-            relaxation_time(&s.t, &excess, std::f64::consts::TAU / frequency).unwrap_or(f64::NAN),
-        ),
+        ("relaxation_time", tau),
         ("excess_left", late_mean(&excess, 0.1) / excess[0]),
         ("oscillator_share", late_mean(&energy, o.late) / total),
-        ("piston_share", late_share(&s.piston, &s.total, o.late)),
+        ("piston_share", late_mean(&shares, o.late)),
         ("mass_ratio", g.mass),
         ("mass_over_gas", g.mass / gas_mass),
         ("speed_ratio", peak / thermal),
@@ -279,28 +275,40 @@ fn across_x(
     ]
 }
 
+/// Mean of the last `fraction` of a record (at least one sample).
+fn late_mean(values: &[f64], fraction: f64) -> f64 {
+    let n = values.len();
+    let from = (((1.0 - fraction.clamp(0.0, 1.0)) * n as f64) as usize).min(n.saturating_sub(1));
+    if n == 0 {
+        return f64::NAN;
+    }
+    values[from..].iter().sum::<f64>() / (n - from) as f64
+}
+
 /// Equipartition: the piston's share of kinetic energy is one over the free
 /// degrees of freedom, its oscillator energy the microcanonical mean; the
 /// frequency ratios are 1 where their theory holds.
 fn theory(d: &Descriptor, result: &str) -> Option<f64> {
-    let scene = crate::scene::resolve(&d.scene).ok()?;
     match result {
         "frequency_ratio" | "frequency_ratio_inertia" | "frequency_ratio_exchange" => Some(1.0),
-        "piston_share" | "oscillator_share" => {
-            let (d, [left, right]) = gas_counts(&scene)?;
-            Some(if result == "piston_share" {
-                1.0 / degrees_of_freedom(d, left + right) as f64
-            } else {
-                oscillator_share(d, left, right, DRAWS).0
-            })
+        "piston_share" => {
+            let (d, [left, right]) = gas_counts(d)?;
+            Some(1.0 / degrees_of_freedom(d, left + right) as f64)
+        }
+        "oscillator_share" => {
+            let (d, [left, right]) = gas_counts(d)?;
+            Some(oscillator_share(d, left, right, DRAWS).0)
         }
         _ => None,
     }
 }
 
-/// The dimension and the gas particles on each side of a scene's piston.
-/// Counts per side do not depend on the random draws.
-fn gas_counts(scene: &crate::model::scene::SceneSpec) -> Option<(usize, [usize; 2])> {
+/// The dimension and the gas particles on each side of a scene's piston,
+/// as the runs count them (`Geometry::of`, on the scene built from seed 0:
+/// counts per side do not depend on the draws). Not from the regions the
+/// scene describes: a rod the lattice puts at the piston's own position is
+/// counted on its left, which only the built scene shows.
+fn gas_counts(d: &Descriptor) -> Option<(usize, [usize; 2])> {
     struct Counts;
     impl OnBuilt for Counts {
         type Output = Option<[usize; 2]>;
@@ -308,78 +316,61 @@ fn gas_counts(scene: &crate::model::scene::SceneSpec) -> Option<(usize, [usize; 
             Some(Geometry::of(built)?.particles)
         }
     }
+    let scene = crate::scene::resolve(&d.scene).ok()?;
     let d = scene.dimension().ok()?;
-    Some((d, on_built(scene, 0, Counts)??))
+    Some((d, on_built(&scene, 0, Counts)??))
 }
 
 /// MacKay's pictures and answer and the 2D wall's (from the descriptor's
 /// `[[case]]`s of those names, where it has them), where the theory holds
 /// across the sweep, how the piston relaxes, and how each number was
 /// measured.
-fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
+fn section(runs: &[(RunSpec, RunOutput)], o: &Options) -> anyhow::Result<ReportSection> {
     let mut figures = Vec::new();
-    let figures = &mut figures;
-    let mut md = pictures::mackay_case(runs, figures)?;
-    md.push_str(&wall::wall_cases(runs, figures)?);
-    md.push_str(&regimes::regimes(runs, figures)?);
-    md.push_str(METHODS);
+    let mut md = pictures::mackay_case(runs, &mut figures)?;
+    md.push_str(&wall::wall_cases(runs, &mut figures)?);
+    md.push_str(&regimes::regimes(runs, o, &mut figures));
+    md.push('\n');
+    md.push_str(&fill(METHODS, &methods_values(o)));
     Ok(ReportSection {
         title: "Piston: oscillation and dissipation".into(),
         markdown: md,
-        figures: std::mem::take(figures),
+        figures,
         presents: RESULTS.iter().map(|r| r.to_string()).collect(),
     })
 }
 
-const METHODS: &str = "\n### How each number is measured\n\n\
-**Theory** works per unit area of the piston's face. Each gas is an ideal gas in its free volume; divided by \
-the face area its centres reach, that is a free length l, and the gas pushes the piston with \
-F = (2/d)(K/l)·dl/da, K its kinetic energy and a its reach along x (wall to piston, less a radius at each end: \
-the layer a disk's centre cannot enter). The free length is the reach less what the particles exclude each \
-other from: in 1D exactly L − Σσ (Tonks); in 2D the free volume Q^(1/N) from the configurational integral \
-to first order in pair overlaps in the box, l = a − c₀ + c₁/a, whose bulk term is the second virial \
-coefficient πσ²/2 per pair and particle and whose edge term counts the exclusion the walls cut off. It \
-leaves out terms of order (B₂ρ)², 0.2(B₂ρ)² in the pressure for disks: 0.04% at the sweep's densest \
-(`excluded_fraction`, about B₂ρ, is 4% with 20 disks a side). A polytrope K l^(γ−1) = const gives the piston a potential: \
-adiabatic γ = (d+2)/d (3 in 1D, 2 in 2D), isothermal γ = 1, collisionless γ = 3 (a gas whose particles \
-never collide compresses only its x-motion). `omega_adiabatic` is the frequency of the full nonlinear \
-adiabatic oscillator (period by quadrature between the turning points), asked at every turning point of the \
-measured periods and averaged period by period: the piston loses energy as it swings, and a nonlinear \
-oscillator's frequency follows its amplitude; at a turning point the piston and the gases as a whole are at \
-rest, so the oscillator energy is all potential and the gases' kinetic energy all heat \
-(`omega_adiabatic_start` is the prediction from the first sample alone, `omega_adiabatic_small` its harmonic \
-limit ω² = γP(1/X_L + 1/X_R)/M). `omega_adiabatic_inertia` adds a third of the gases' mass to the piston's \
-(a uniformly compressed gas moves with a velocity rising linearly from wall to piston: Rayleigh's correction \
-for a spring's own mass, which holds for the gas's x-motion in any dimension; the flow's energy belongs to \
-the oscillator, not to the gas's heat). `omega_isothermal` and, in 2D, `omega_collisionless` are those laws \
-asked at the same oscillation moved along its adiabat to the balance, where neither gas is hot or cold from \
-the swing. In 2D the gases are also relaxing media: a compression along x heats x first and collisions \
-share it with y in τ_x = η/p (Chapman–Enskog viscosity of hard disks, Henderson's contact value; \
-`exchange_time`, stiffness-weighted over the sides, and `omega_tau` = ω τ_x); with each gas's stiffness \
-k(1 + ½ iωτ_x/(1 + iωτ_x)) the oscillator is stiffer and loses energy every swing: `omega_exchange` is the \
-frequency with the gases' inertia and this lag, `relaxation_time_exchange` the time in which it loses energy \
-by e (from the start, small-amplitude).\n\n\
-**Frequency** (`frequency`): from the first `window_periods` (default 4) full periods of the piston's position. \
-Turning points are found with a hysteresis band of 10% of the position's range (`band`), so jitter makes no \
-extra turning points and counting stops once the oscillation has decayed into the band; between consecutive \
-turning points the position crosses their midpoint, and same-direction crossings, interpolated where the motion \
-is steepest, are one period apart (exactly so for an exponentially damped oscillation, and independent of a \
-drifting centre). Zero crossings rather than a spectral peak: the early motion is nonlinear and decays, and a \
-peak over four periods is resolved only to ±25%. `frequency_periods` says how many periods were used; a run \
-with no full period above the band gives no frequency and is counted in n.\n\n\
-**Relaxation** (`relaxation_time`): the piston's oscillator energy E_osc = K_piston + U(x) − U_min, U the \
-adiabatic potential through each gas's current state, so energy already handed to the gases as heat does not \
-count and the kinetic–potential swing of the oscillation cancels. At equilibrium E_osc averages \
-`oscillator_share` × K, computed by sampling the microcanonical ensemble (velocities uniform on the energy \
-sphere, piston position from the gases' configurational weight l_L^N_L l_R^N_R). The relaxation time is when \
-the excess E_osc − E_eq first falls to 1/e of its start, interpolated between samples. The decay is not one \
-exponential (fast while the motion is far from adiabatic, ever slower as it becomes adiabatic, and near \
-equilibrium E_osc wanders for long times), so an exponential fitted to the whole record would follow the late \
-wandering; the first passage is the time to give away 63% of the excess whatever the shape. Runs too short to \
-reach it report none; `excess_left` (the fraction of the starting excess left over the last 10% of the run) \
-then gives the lower bound τ > T / −ln(excess_left), valid for a decay that does not speed up.\n\n\
-**Long-time shares**: `piston_share` is the piston's mean share of the kinetic energy over the last half of \
-the run (`late_fraction`), against equipartition 1/N_free with N_free = d N_gas + 1 (the piston moves along x \
-only: 2N_side + 1 in 1D, 2N_gas + 1 for a wall in 2D); `oscillator_share` likewise for E_osc. They test \
-equipartition only where the piston has relaxed (τ well below half the run); elsewhere a large z measures how \
-far from equilibrium it still is.\n";
+const METHODS: &str = include_str!("text/methods.md");
+
+/// The settings the methods text states.
+fn methods_values(o: &Options) -> [(&'static str, String); 4] {
+    [
+        ("periods", o.periods.to_string()),
+        ("band", num(100.0 * o.band)),
+        ("peak", format!("{:.0}", 100.0 / o.periods as f64)),
+        ("late", num(100.0 * o.late)),
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn late_mean_takes_the_end() {
+        assert_eq!(late_mean(&[1.0, 2.0, 3.0, 5.0], 0.5), 4.0);
+        assert_eq!(late_mean(&[1.0, 2.0], 0.0), 2.0);
+    }
+
+    #[test]
+    fn methods_placeholders_are_filled() {
+        let o = Options {
+            periods: 4,
+            band: 0.1,
+            late: 0.5,
+        };
+        let text = fill(METHODS, &methods_values(&o));
+        assert!(crate::stats::fill::unfilled(&text).is_empty());
+        assert!(text.contains("first 4 full periods") && text.contains("±25%"));
+    }
+}

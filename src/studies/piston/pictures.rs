@@ -3,17 +3,15 @@
 //! over the first 40 time units and the whole run) with the adiabatic
 //! prediction drawn in, and his question answered in numbers.
 
-use super::cases;
+use super::cases::{self, First};
 use crate::model::chart::{ChartSpec, Layer, Paint};
 use crate::model::report::Figure;
-use crate::model::run_output::RunOutput;
-use crate::scene::Built;
+use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
 use crate::stats::summary::Stats;
-use crate::studies::piston::DRAWS;
-use crate::studies::piston::state::{Geometry, Samples};
 use crate::theory::piston::Law;
-use crate::theory::piston_equilibrium::oscillator_share;
+use crate::theory::piston_equilibrium::degrees_of_freedom;
+use std::f64::consts::TAU;
 use std::fmt::Write;
 
 const BLUE: (u8, u8, u8) = (0, 114, 178);
@@ -25,7 +23,9 @@ pub(super) const GREY: (u8, u8, u8) = (150, 150, 150);
 /// A predicted piston path (t, x), its colour and its legend.
 pub(super) type PredictedPath = (Vec<(f64, f64)>, (u8, u8, u8), &'static str);
 
-pub(super) fn colour(species: &str) -> (u8, u8, u8) {
+const ANSWER: &str = include_str!("text/mackay.md");
+
+fn colour(species: &str) -> (u8, u8, u8) {
     match species {
         "light" => BLUE,
         "heavy" => GREEN,
@@ -35,147 +35,157 @@ pub(super) fn colour(species: &str) -> (u8, u8, u8) {
 
 /// The `[[case]]` that runs MacKay's own eleven particles.
 pub const CASE: &str = "mackay";
-/// MacKay's case from its runs: his pictures, and his question answered.
+
+/// MacKay's case from its runs: his question answered, and his pictures.
 /// Empty if the plan has no such case.
 pub fn mackay_case(all: &[cases::Run], figures: &mut Vec<Figure>) -> anyhow::Result<String> {
     let replicas = cases::runs(all, CASE);
-    let Some((spec, out)) = replicas.first().copied() else {
+    let Some(run) = replicas.first().copied() else {
         return Ok(String::new());
     };
-    let stat = |name: &str| cases::stat(&replicas, name);
-    let built = cases::start::<1>(spec)?;
-    let first = First { built, out };
-    let run = &spec.descriptor.run;
-    let duration = run.duration.unwrap_or(f64::NAN);
-    let sample_every = run.sample_every.unwrap_or(f64::NAN);
-    let n_runs = replicas.len();
-    let geometry = Geometry::of(&first.built).ok_or_else(|| anyhow::anyhow!("no piston"))?;
-    let samples = Samples::of(first.out).map_err(|e| anyhow::anyhow!(e))?;
-    let p = first.built.piston.unwrap_or(0);
-    let start = geometry.system(
-        samples.x[0],
-        samples.piston[0],
-        samples.left[0],
-        samples.right[0],
-        first.built.particles[p].vel[0],
-    );
+    let first = First::<1>::of(run)?;
+    let duration = run.0.descriptor.run.duration.unwrap_or(f64::NAN);
     let paths = [
         (Law::Adiabatic, BLACK, "adiabatic theory (γ = 3)"),
         (Law::Isothermal, GREY, "isothermal (γ = 1)"),
     ]
-    .map(|(law, rgb, label)| (start.trajectory(law, duration, 0.02), rgb, label));
-    let mut md = String::new();
+    .map(|(law, rgb, label)| (first.start.trajectory(law, duration, 0.02), rgb, label));
+    let run_settings = &run.0.descriptor.run;
+    let sample_every = run_settings.sample_every.unwrap_or(f64::NAN);
+    let [left, right] = first.geometry.particles;
+    let values = answer(
+        &|name| cases::stat(&replicas, name),
+        replicas.len(),
+        (duration, sample_every),
+        cases::cost(&replicas),
+        (first.geometry.mass, degrees_of_freedom(1, left + right)),
+    );
+    let mut md = fill(ANSWER, &values);
     let horizons = [40.0_f64.min(duration), duration];
     for horizon in horizons {
-        let name = spacetime(&first, &paths, horizon, figures)?;
+        let name = spacetime(&first, &paths, horizon, figures);
         let _ = writeln!(
             md,
             "![MacKay's case, first {horizon} time units: positions of all particles (time up; light gas blue, heavier gas green, piston purple) and the piston's path predicted by the adiabatic (black dashed) and isothermal (grey dashed) oscillators from the same start.]({name})\n"
         );
     }
-    let total = samples.total[0];
-    let (share_eq, _) = oscillator_share(1, geometry.particles[0], geometry.particles[1], DRAWS);
-    let energy = samples.oscillator_energy(&geometry);
     for horizon in horizons {
         let name = format!("mackay_energy_{horizon}.svg");
-        let oscillator = Oscillator {
-            t: &samples.t,
-            energy: &energy,
-            equilibrium: share_eq * total,
-        };
-        energies(
-            first.out,
-            &oscillator,
-            horizon,
-            &format!("Kinetic energy of each gas and of the piston, first {horizon} time units"),
-            &name,
-            figures,
-        )?;
+        let title =
+            format!("Kinetic energy of each gas and of the piston, first {horizon} time units");
+        energies(&first, horizon, &title, &name, figures);
         let _ = writeln!(
             md,
             "![Kinetic energy of the light gas (blue), the heavier gas (green) and the piston (purple) over the first {horizon} time units; dashed: the piston's oscillator energy (kinetic + adiabatic potential) and its equilibrium level.]({name})\n"
         );
     }
+    Ok(md)
+}
 
-    let (cost_collisions, cost_seconds) = cases::cost(&replicas);
+/// The numbers of MacKay's answer (`text/mackay.md`), from the results of
+/// its `runs` replicas, their duration and sampling interval, their cost,
+/// and the piston's mass and the free degrees of freedom.
+fn answer(
+    stat: &dyn Fn(&str) -> Stats,
+    runs: usize,
+    (duration, sample_every): (f64, f64),
+    (collisions, seconds): (u64, f64),
+    (mass, free): (f64, usize),
+) -> Vec<(&'static str, String)> {
     let measured = stat("frequency");
-    let period = |w: f64| std::f64::consts::TAU / w;
-    let theory = |name: &str| stat(name).mean;
-    let (ad, inertia, small, iso) = (
-        theory("omega_adiabatic"),
-        theory("omega_adiabatic_inertia"),
-        theory("omega_adiabatic_small"),
-        theory("omega_isothermal"),
-    );
-    let ratio = stat("frequency_ratio");
-    let ratio_inertia = stat("frequency_ratio_inertia");
-    let ratio_iso = stat("frequency_ratio_isothermal");
+    let period = |w: f64| TAU / w;
+    let omega = |name: &str| stat(name).mean;
+    let (ad, inertia) = (omega("omega_adiabatic"), omega("omega_adiabatic_inertia"));
+    let (small, iso) = (omega("omega_adiabatic_small"), omega("omega_isothermal"));
+    let ratios = [
+        "frequency_ratio",
+        "frequency_ratio_inertia",
+        "frequency_ratio_isothermal",
+    ]
+    .map(stat);
+    let both = |s: &Stats| pm(s.mean, s.stderr);
     let tau = stat("relaxation_time");
-    let speed = stat("speed_ratio");
-    let mut text = String::new();
-    let _ = write!(
-        text,
-        "### MacKay's case: at what frequency?\n\n\
-         MacKay's eleven particles (`preset = \"mackay-piston\"`): five light rods (masses 0.9–1.1) left, five \
-         heavier (1.5–1.7) right, a piston of mass 40 between them, all starting with velocity 1, so the piston \
-         holds {share:.0}% of the kinetic energy (equipartition: 1/11 = 9%). {n_runs} replicas (the masses are \
-         drawn from his ranges), {duration} time units each, sampled every {sample_every}: {coll} collisions, \
-         {secs:.2} CPU s in all.\n\n\
-         If each gas is compressed adiabatically (P X^3 fixed in 1D), the piston moves in the potential of the \
-         two gases, and with this much energy its swing is large, so the oscillation is far from harmonic:\n\n\
-         | prediction | ω | period |\n|---|---|---|\n\
-         | adiabatic, nonlinear, at the amplitude of each measured period | {ad} | {pad} |\n\
-         | adiabatic, nonlinear, gases' inertia added (M + M_gas/3) | {inr} | {pinr} |\n\
-         | adiabatic, small oscillations, ω² = γP(1/X_L + 1/X_R)/M | {sm} | {psm} |\n\
-         | isothermal (γ = 1), nonlinear | {iso} | {piso} |\n\
-         | **measured** (first periods, mean ± standard error, n = {n} of {n_runs}) | **{meas}** | **{pmeas}** |\n\n\
-         Measured over adiabatic: {r_ad}; over adiabatic with the gases' inertia: {r_in}; over isothermal: \
-         {r_iso}. {verdict} The piston's peak speed is {speed} times the gases' thermal speed: {slow}.\n\n\
-         **How does it lose its excess energy?** Each collision exchanges momentum between the piston and a gas \
-         particle. While the piston moves into a gas, the particles it meets bounce off faster than they came \
-         and those behind it slower; when the gas follows its adiabat this is reversible: the energy comes \
-         back when the piston returns. What is lost is the part that is not: particles arriving at \
-         different phases, and collisions within each gas that share the energy out. Here the piston gives \
-         away 63% of its excess oscillator energy in τ = {tau} time units (n = {taun} of {n_runs}), about \
-         {cycles:.1} periods; the sweep below shows how that time grows with M.\n\n",
-        share = 100.0 * stat("initial_piston_share").mean,
-        coll = count(cost_collisions),
-        secs = cost_seconds,
-        ad = num(ad),
-        pad = num(period(ad)),
-        inr = num(inertia),
-        pinr = num(period(inertia)),
-        sm = num(small),
-        psm = num(period(small)),
-        iso = num(iso),
-        piso = num(period(iso)),
-        n = measured.n,
-        meas = pm(measured.mean, measured.stderr),
-        pmeas = pm(
-            period(measured.mean),
-            measured.stderr * period(measured.mean) / measured.mean
+    let speed = stat("speed_ratio").mean;
+    let harmonic = 100.0 * (small / ad - 1.0);
+    vec![
+        (
+            "share",
+            format!("{:.0}", 100.0 * stat("initial_piston_share").mean),
         ),
-        r_ad = pm(ratio.mean, ratio.stderr),
-        r_in = pm(ratio_inertia.mean, ratio_inertia.stderr),
-        r_iso = pm(ratio_iso.mean, ratio_iso.stderr),
-        verdict = verdict(&ratio, &ratio_inertia, &ratio_iso),
-        speed = num(speed.mean),
-        slow = if speed.mean < 0.3 {
-            "the compression is slow, as the adiabatic picture assumes"
-        } else {
-            "the compression is not slow, so the gases lag behind their adiabats"
-        },
-        tau = pm(tau.mean, tau.stderr),
-        taun = tau.n,
-        cycles = tau.mean * measured.mean / std::f64::consts::TAU,
-    );
-    text.push_str(&md);
-    Ok(text)
+        ("mass", num(mass)),
+        ("free", free.to_string()),
+        ("equipartition", format!("{:.0}", 100.0 / free as f64)),
+        ("n_runs", runs.to_string()),
+        ("duration", duration.to_string()),
+        ("sample_every", sample_every.to_string()),
+        ("coll", count(collisions)),
+        ("secs", format!("{seconds:.2}")),
+        (
+            "swing",
+            format!(
+                "at this energy the small-oscillation frequency is {:.0}% {} the nonlinear one, so the \
+                 oscillation is {}",
+                harmonic.abs(),
+                if harmonic < 0.0 { "below" } else { "above" },
+                if harmonic.abs() > 5.0 {
+                    "far from harmonic"
+                } else {
+                    "nearly harmonic"
+                }
+            ),
+        ),
+        ("ad", num(ad)),
+        ("pad", num(period(ad))),
+        ("inr", num(inertia)),
+        ("pinr", num(period(inertia))),
+        ("sm", num(small)),
+        ("psm", num(period(small))),
+        ("iso", num(iso)),
+        ("piso", num(period(iso))),
+        ("n", measured.n.to_string()),
+        ("meas", both(&measured)),
+        (
+            "pmeas",
+            pm(
+                period(measured.mean),
+                measured.stderr * period(measured.mean) / measured.mean,
+            ),
+        ),
+        ("r_ad", both(&ratios[0])),
+        ("r_in", both(&ratios[1])),
+        ("r_iso", both(&ratios[2])),
+        ("verdict", verdict(&ratios[0], &ratios[1], &ratios[2])),
+        ("speed", num(speed)),
+        ("slow", slow(speed, fits(&ratios[0]) || fits(&ratios[1]))),
+        ("tau", both(&tau)),
+        ("taun", tau.n.to_string()),
+        ("cycles", format!("{:.1}", tau.mean * measured.mean / TAU)),
+    ]
+}
+
+/// A measured ratio agrees with 1 within four standard errors.
+fn fits(s: &Stats) -> bool {
+    (s.mean - 1.0).abs() <= 4.0 * s.stderr
+}
+
+/// Whether the compression is slow (peak piston speed below 0.3 of the
+/// gases' thermal speed) and whether the adiabatic frequency held.
+fn slow(speed: f64, adiabatic: bool) -> String {
+    let pace = if speed < 0.3 { "slow" } else { "not slow" };
+    let held = match (speed < 0.3, adiabatic) {
+        (true, true) | (false, false) => "and",
+        _ => "yet",
+    };
+    let frequency = if adiabatic {
+        "the adiabatic frequency holds"
+    } else {
+        "the frequency departs from the adiabatic one"
+    };
+    format!(": the compression is {pace} (below 0.3 counts as slow), {held} {frequency}")
 }
 
 /// Which theory the measurement agrees with, by the error bar (4 standard errors).
 fn verdict(ad: &Stats, inertia: &Stats, iso: &Stats) -> String {
-    let fits = |s: &Stats| (s.mean - 1.0).abs() <= 4.0 * s.stderr;
     let gap = |s: &Stats| format!("{:+.1}%", 100.0 * (s.mean - 1.0));
     match (fits(ad), fits(inertia), fits(iso)) {
         (true, _, false) => {
@@ -191,40 +201,34 @@ fn verdict(ad: &Stats, inertia: &Stats, iso: &Stats) -> String {
             "The error bar cannot tell the adiabatic prediction from the isothermal one.".into()
         }
         (false, false, false) => format!(
-            "No prediction holds within the error bar: the measured frequency is {} off the adiabatic one ({} with the gases' inertia) and {} off the isothermal one, much closer to adiabatic.",
+            "No prediction holds within the error bar: the measured frequency is {} off the adiabatic one ({} with the gases' inertia) and {} off the isothermal one, closer to {}.",
             gap(ad),
             gap(inertia),
-            gap(iso)
+            gap(iso),
+            if (ad.mean - 1.0).abs() < (iso.mean - 1.0).abs() {
+                "adiabatic"
+            } else {
+                "isothermal"
+            }
         ),
     }
 }
 
-/// The first replica: its start and what it recorded.
-struct First<'a> {
-    built: Built<1>,
-    out: &'a RunOutput,
-}
-
 /// MacKay's space-time diagram with the predicted piston paths; returns the file name.
 fn spacetime(
-    first: &First,
+    first: &First<1>,
     paths: &[PredictedPath],
     horizon: f64,
     figures: &mut Vec<Figure>,
-) -> anyhow::Result<String> {
+) -> String {
     let built = &first.built;
+    let before = |(t, x): (&f64, &f64)| (*t <= horizon).then_some((*x, *t));
     let mut layers: Vec<Layer> = (0..built.particles.len())
         .filter_map(|i| {
             let s = first.out.series(&format!("x.{i}"))?;
             let species = &built.species[built.particles[i].species as usize];
-            let points =
-                s.t.iter()
-                    .zip(&s.value)
-                    .filter(|(t, _)| **t <= horizon)
-                    .map(|(t, x)| (*x, *t))
-                    .collect();
             Some(Layer::Line {
-                points,
+                points: s.t.iter().zip(&s.value).filter_map(before).collect(),
                 paint: Paint::solid(colour(species)),
                 width: if species == "piston" { 3 } else { 1 },
                 dashed: false,
@@ -236,8 +240,8 @@ fn spacetime(
         layers.push(Layer::Line {
             points: path
                 .iter()
-                .filter(|(t, _)| *t <= horizon)
-                .map(|(t, x)| (*x, *t))
+                .map(|(t, x)| (t, x))
+                .filter_map(before)
                 .collect(),
             paint: Paint::solid(*rgb),
             width: 2,
@@ -246,52 +250,37 @@ fn spacetime(
         });
     }
     let name = format!("mackay_spacetime_{horizon}.svg");
-    let chart = ChartSpec {
-        title: format!("MacKay's piston: positions, first {horizon} time units"),
-        x_label: "position x [σ]".into(),
-        y_label: "time t".into(),
-        layers,
-        ..Default::default()
-    };
     figures.push(Figure {
-        file: name.to_string(),
-        chart,
+        file: name.clone(),
+        chart: ChartSpec {
+            title: format!("MacKay's piston: positions, first {horizon} time units"),
+            x_label: "position x [σ]".into(),
+            y_label: "time t".into(),
+            layers,
+            ..Default::default()
+        },
     });
-    Ok(name)
-}
-
-/// The piston's oscillator energy over time and the level it relaxes to.
-pub(super) struct Oscillator<'a> {
-    pub t: &'a [f64],
-    pub energy: &'a [f64],
-    pub equilibrium: f64,
+    name
 }
 
 /// Kinetic energy of each gas and the piston, with the oscillator energy
 /// and its equilibrium level, up to `horizon`; written as `name`.
-pub(super) fn energies(
-    out: &RunOutput,
-    osc: &Oscillator,
+pub(super) fn energies<const D: usize>(
+    first: &First<D>,
     horizon: f64,
     title: &str,
     name: &str,
     figures: &mut Vec<Figure>,
-) -> anyhow::Result<()> {
-    let (t, oscillator, equilibrium) = (osc.t, osc.energy, osc.equilibrium);
-    let within = |t: f64| t <= horizon;
-    let mut layers: Vec<Layer> = out
+) {
+    let before = |(t, e): (&f64, &f64)| (*t <= horizon).then_some((*t, *e));
+    let mut layers: Vec<Layer> = first
+        .out
         .series
         .iter()
         .filter_map(|s| {
             let species = s.observable.strip_prefix("kinetic_energy.")?;
             Some(Layer::Line {
-                points: s
-                    .t
-                    .iter()
-                    .zip(&s.value)
-                    .filter(|(t, _)| within(**t))
-                    .map(|(t, e)| (*t, *e))
-                    .collect(),
+                points: s.t.iter().zip(&s.value).filter_map(before).collect(),
                 paint: Paint::solid(colour(species)),
                 width: 2,
                 dashed: false,
@@ -300,17 +289,19 @@ pub(super) fn energies(
         })
         .collect();
     layers.push(Layer::Line {
-        points: t
+        points: first
+            .samples
+            .t
             .iter()
-            .zip(oscillator)
-            .filter(|(t, _)| within(**t))
-            .map(|(t, e)| (*t, *e))
+            .zip(&first.energy)
+            .filter_map(before)
             .collect(),
         paint: Paint::solid(PURPLE).faded(0.6),
         width: 1,
         dashed: true,
         label: Some("piston oscillator energy".into()),
     });
+    let equilibrium = first.equilibrium;
     layers.push(Layer::Line {
         points: vec![(0.0, equilibrium), (horizon, equilibrium)],
         paint: Paint::solid(GREY),
@@ -318,16 +309,26 @@ pub(super) fn energies(
         dashed: true,
         label: Some("its equilibrium mean".into()),
     });
-    let chart = ChartSpec {
-        title: title.to_string(),
-        x_label: "time t".into(),
-        y_label: "kinetic energy".into(),
-        layers,
-        ..Default::default()
-    };
     figures.push(Figure {
         file: name.to_string(),
-        chart,
+        chart: ChartSpec {
+            title: title.to_string(),
+            x_label: "time t".into(),
+            y_label: "kinetic energy".into(),
+            layers,
+            ..Default::default()
+        },
     });
-    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_placeholder_of_the_answer_is_filled() {
+        let stat = |_: &str| Stats::of(&[0.9, 1.1]);
+        let values = answer(&stat, 2, (200.0, 0.05), (10, 0.1), (40.0, 11));
+        assert!(crate::stats::fill::unfilled(&fill(ANSWER, &values)).is_empty());
+    }
 }

@@ -2,9 +2,10 @@
 //! statistics of every result the report shows, its cost), and the points
 //! grouped by dimension and by the parameters other than the piston's mass.
 
-use super::estimators::decay_bound;
+use super::RESULTS;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
+use crate::stats::decay::decay_bound;
 use crate::stats::groups::first_seen;
 use crate::stats::summary::Stats;
 use std::collections::BTreeMap;
@@ -29,25 +30,6 @@ pub struct Point {
     pub seconds: f64,
     pub collisions: u64,
 }
-
-const RESULTS: &[&str] = &[
-    "frequency_ratio",
-    "frequency_ratio_inertia",
-    "frequency_ratio_isothermal",
-    "frequency_ratio_collisionless",
-    "frequency_ratio_exchange",
-    "omega_tau",
-    "mass_over_gas",
-    "speed_ratio",
-    "relaxation_time",
-    "relaxation_time_exchange",
-    "excess_left",
-    "piston_share",
-    "oscillator_share",
-    "excluded_fraction",
-    "frequency",
-    "frequency_periods",
-];
 
 /// The sweep's points in order of their ids (cases are not the sweep's).
 pub fn points(runs: &[(RunSpec, RunOutput)]) -> Vec<Point> {
@@ -88,8 +70,7 @@ pub fn points(runs: &[(RunSpec, RunOutput)]) -> Vec<Point> {
                 duration: spec.descriptor.run.duration.unwrap_or(f64::NAN),
                 sample_every: spec.descriptor.run.sample_every.unwrap_or(f64::NAN),
                 stats,
-                equipartition: crate::studies::piston::theory(&spec.descriptor, "piston_share")
-                    .unwrap_or(f64::NAN),
+                equipartition: super::theory(&spec.descriptor, "piston_share").unwrap_or(f64::NAN),
                 seconds: rs.iter().map(|r| r.1.wall_seconds).sum(),
                 collisions: rs.iter().map(|r| r.1.collisions).sum(),
             }

@@ -4,16 +4,24 @@
 //! with M; the long-time share against equipartition; each with its cost.
 //! One part per dimension the sweep holds.
 
-use crate::model::chart::colour;
-use crate::model::chart::{ChartSpec, Layer, Paint};
+use super::Options;
+use crate::model::chart::{ChartSpec, Layer, Paint, colour};
 use crate::model::report::Figure;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
+use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
 use crate::stats::summary::Stats;
 use crate::studies::piston::points::{Point, by_dimension, groups, points};
 use crate::studies::piston::relaxation::relaxation;
+use std::f64::consts::{PI, TAU};
 use std::fmt::Write;
+
+const PARAMETERS: &str = include_str!("text/parameters.md");
+const PARAMETERS_ACROSS: &str = include_str!("text/parameters_2d.md");
+const TABLE: &str = include_str!("text/table.md");
+const TABLE_ACROSS: &str = include_str!("text/table_2d.md");
+const EQUIPARTITION: &str = include_str!("text/equipartition.md");
 
 /// How a frequency ratio compares with 1: holds (within 1% with two
 /// standard errors to spare), small deviation (significant, below 5%),
@@ -57,44 +65,38 @@ fn verdict_text(s: &Stats) -> String {
 }
 
 /// The regime summary, tables and figures, one part per dimension.
-pub fn regimes(runs: &[(RunSpec, RunOutput)], figures: &mut Vec<Figure>) -> anyhow::Result<String> {
+pub fn regimes(runs: &[(RunSpec, RunOutput)], o: &Options, figures: &mut Vec<Figure>) -> String {
     let all = points(runs);
     let mut md = String::new();
     for (dimension, points) in by_dimension(&all) {
-        let _ = writeln!(
-            md,
-            "\n### {}: where the adiabatic theory holds\n",
-            heading(dimension)
-        );
-        md.push_str(&boundaries(&points, dimension));
-        let name = frequency_figure(&points, dimension, figures)?;
+        let heading = match dimension {
+            1 => "Rods (1D)",
+            2 => "Disks beside a wall (2D)",
+            _ => "Spheres beside a wall (3D)",
+        };
+        let across = dimension > 1;
+        let _ = writeln!(md, "\n### {heading}: where the adiabatic theory holds\n");
+        md.push_str(&boundaries(&points, across));
+        let name = frequency_figure(&points, dimension, figures);
         let _ = writeln!(
             md,
             "![{dimension}D: measured frequency over the nonlinear adiabatic prediction against the piston's mass over the gases' mass (mean ± standard error per sweep point); the curve is the gases'-inertia correction sqrt(M/(M + M_gas/3)) for small oscillations.]({name})\n"
         );
         md.push_str(&resolution(&points));
-        md.push_str(&table(&points, dimension));
-        let _ = writeln!(md, "\n### {}: how the piston relaxes\n", heading(dimension));
-        md.push_str(&relaxation(&points, dimension, figures)?);
-        let _ = writeln!(md, "\n### {}: the long-time share\n", heading(dimension));
-        md.push_str(&equipartition(&points));
+        md.push_str(&table(&points, across));
+        let _ = writeln!(md, "\n### {heading}: how the piston relaxes\n");
+        md.push_str(&relaxation(&points, dimension, figures));
+        let _ = writeln!(md, "\n### {heading}: the long-time share\n");
+        md.push_str(&equipartition(&points, o.late));
     }
-    Ok(md)
-}
-
-fn heading(dimension: usize) -> &'static str {
-    match dimension {
-        1 => "Rods (1D)",
-        2 => "Disks beside a wall (2D)",
-        _ => "Spheres beside a wall (3D)",
-    }
+    md
 }
 
 /// Where the theory holds and breaks down, in terms of M/M_gas, the speed
 /// ratio and (across x) omega tau.
-fn boundaries(points: &[&Point], dimension: usize) -> String {
+fn boundaries(points: &[&Point], across: bool) -> String {
     let mut md = String::new();
-    let mut judged_results = vec![
+    let judged_results = [
         (
             "frequency_ratio",
             "The adiabatic frequency (piston alone as the inertia)",
@@ -103,118 +105,104 @@ fn boundaries(points: &[&Point], dimension: usize) -> String {
             "frequency_ratio_inertia",
             "With a third of the gases' mass added to the piston's, the adiabatic frequency",
         ),
-    ];
-    if dimension > 1 {
-        judged_results.push((
+        (
             "frequency_ratio_exchange",
             "With the gases' inertia and their lag in sharing the compression (exchange theory), the frequency",
-        ));
+        ),
+    ];
+    for (result, what) in &judged_results[..if across { 3 } else { 2 }] {
+        md.push_str(&boundary(points, result, what, across));
     }
-    for (result, what) in judged_results {
-        let judged: Vec<(f64, f64, f64, Verdict)> = points
-            .iter()
-            .map(|p| {
-                (
-                    p.stat("mass_over_gas").mean,
-                    p.stat("speed_ratio").mean,
-                    p.stat("omega_tau").mean,
-                    verdict(&p.stat(result)),
-                )
-            })
-            .filter(|(mu, ..)| mu.is_finite())
-            .collect();
-        // The smallest M/M_gas from which on every point holds, and the
-        // largest up to which every point breaks down.
-        let holds_from = judged
-            .iter()
-            .map(|j| j.0)
-            .filter(|&mu| {
-                judged
-                    .iter()
-                    .filter(|j| j.0 >= mu)
-                    .all(|j| j.3 == Verdict::Holds)
-            })
-            .fold(f64::INFINITY, f64::min);
-        let breaks_to = judged
-            .iter()
-            .map(|j| j.0)
-            .filter(|&mu| {
-                judged
-                    .iter()
-                    .filter(|j| j.0 <= mu)
-                    .all(|j| j.3 == Verdict::Breaks)
-            })
-            .fold(f64::NEG_INFINITY, f64::max);
-        let holding = |f: fn(&(f64, f64, f64, Verdict)) -> f64| {
-            judged
-                .iter()
-                .filter(|j| j.3 == Verdict::Holds)
-                .map(f)
-                .fold(f64::NEG_INFINITY, f64::max)
-        };
-        let count_of = |v: Verdict| judged.iter().filter(|j| j.3 == v).count();
-        let _ = write!(
-            md,
-            "- {what} holds within 1% (two standard errors to spare) at {} of {} points",
-            count_of(Verdict::Holds),
-            judged.len()
-        );
-        if holds_from.is_finite() {
-            let _ = write!(md, ", at every point with M/M_gas ≥ {}", num(holds_from));
-        }
-        let fastest = holding(|j| j.1);
-        if fastest.is_finite() {
-            let _ = write!(
-                md,
-                " (piston speed up to {} of the gases' thermal speed",
-                num(fastest)
-            );
-            let wt = holding(|j| j.2);
-            if dimension > 1 && wt.is_finite() {
-                let _ = write!(md, ", ωτ_x up to {}", num(wt));
-            }
-            md.push(')');
-        }
-        for (verdict, label) in [
-            (
-                Verdict::Agrees,
-                "agrees within an error bar that would show 5%",
-            ),
-            (Verdict::Small, "small deviations (< 5%)"),
-            (Verdict::Breaks, "breaks down (> 5%)"),
-        ] {
-            let n = count_of(verdict);
-            if n > 0 {
-                let _ = write!(
-                    md,
-                    "; {label} at {n} point{}",
-                    if n == 1 { "" } else { "s" }
-                );
-            }
-        }
-        if breaks_to.is_finite() {
-            let _ = write!(md, ", at every point with M/M_gas ≤ {}", num(breaks_to));
-        }
-        md.push_str(".\n");
-    }
-    md.push_str(
-        "\nThe physical parameter is M/M_gas, the piston's mass over the gases' (M_gas = both sides): the \
-         period over the gas's sound-crossing time X/c is 2π·sqrt(M/M_gas) for a symmetric piston (c² = γkT/m), so a \
-         light piston oscillates as fast as the gas can carry the compression across, and the gas's own inertia \
-         adds M_gas/3 to the piston's (the frequency falls by about M_gas/(6M)). The speed ratio (peak piston \
-         speed over the gases' thermal speed) measures how far from slow the compression is; it grows with the \
-         starting energy and falls as 1/sqrt(M).",
-    );
-    if dimension > 1 {
-        md.push_str(
-            " Across x there is a second parameter: ωτ_x, the radians the piston swings in the time τ_x the disks \
-             take to share heat between x and y (a mean free time). For ωτ_x ≪ 1 the gas compresses as a 2D gas \
-             (γ = 2); for ωτ_x ≫ 1 as a collisionless one, each disk keeping its x-action like a rod in 1D (γ = 3, \
-             a frequency sqrt(3/2) = 1.22 times higher); in between it lags and dissipates. The exchange theory \
-             puts the two together with the gases' inertia.",
-        );
+    md.push('\n');
+    md.push_str(PARAMETERS.trim_end());
+    if across {
+        md.push(' ');
+        md.push_str(PARAMETERS_ACROSS.trim_end());
     }
     md.push_str("\n\n");
+    md
+}
+
+/// One bullet: at how many points `result` holds, from which M/M_gas on,
+/// up to which piston speed (and omega tau), and how the others fail.
+fn boundary(points: &[&Point], result: &str, what: &str, across: bool) -> String {
+    // (M/M_gas, speed ratio, omega tau, verdict) per point.
+    let judged: Vec<(f64, f64, f64, Verdict)> = points
+        .iter()
+        .map(|p| {
+            let mean = |name: &str| p.stat(name).mean;
+            let v = verdict(&p.stat(result));
+            (
+                mean("mass_over_gas"),
+                mean("speed_ratio"),
+                mean("omega_tau"),
+                v,
+            )
+        })
+        .filter(|(mu, ..)| mu.is_finite())
+        .collect();
+    // The smallest M/M_gas from which on every point holds, and the
+    // largest up to which every point breaks down.
+    let all_from = |mu: f64, above: bool, v: Verdict| {
+        judged
+            .iter()
+            .filter(|j| if above { j.0 >= mu } else { j.0 <= mu })
+            .all(|j| j.3 == v)
+    };
+    let masses = || judged.iter().map(|j| j.0);
+    let holds_from = masses()
+        .filter(|&mu| all_from(mu, true, Verdict::Holds))
+        .fold(f64::INFINITY, f64::min);
+    let breaks_to = masses()
+        .filter(|&mu| all_from(mu, false, Verdict::Breaks))
+        .fold(f64::NEG_INFINITY, f64::max);
+    let holding = |f: fn(&(f64, f64, f64, Verdict)) -> f64| {
+        judged
+            .iter()
+            .filter(|j| j.3 == Verdict::Holds)
+            .map(f)
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let count_of = |v: Verdict| judged.iter().filter(|j| j.3 == v).count();
+    let mut md = format!(
+        "- {what} holds within 1% (two standard errors to spare) at {} of {} points",
+        count_of(Verdict::Holds),
+        judged.len()
+    );
+    if holds_from.is_finite() {
+        let _ = write!(md, ", at every point with M/M_gas ≥ {}", num(holds_from));
+    }
+    let fastest = holding(|j| j.1);
+    if fastest.is_finite() {
+        let _ = write!(
+            md,
+            " (piston speed up to {} of the gases' thermal speed",
+            num(fastest)
+        );
+        let wt = holding(|j| j.2);
+        if across && wt.is_finite() {
+            let _ = write!(md, ", ωτ_x up to {}", num(wt));
+        }
+        md.push(')');
+    }
+    for (verdict, label) in [
+        (
+            Verdict::Agrees,
+            "agrees within an error bar that would show 5%",
+        ),
+        (Verdict::Small, "small deviations (< 5%)"),
+        (Verdict::Breaks, "breaks down (> 5%)"),
+    ] {
+        let n = count_of(verdict);
+        if n > 0 {
+            let s = if n == 1 { "" } else { "s" };
+            let _ = write!(md, "; {label} at {n} point{s}");
+        }
+    }
+    if breaks_to.is_finite() {
+        let _ = write!(md, ", at every point with M/M_gas ≤ {}", num(breaks_to));
+    }
+    md.push_str(".\n");
     md
 }
 
@@ -230,57 +218,61 @@ fn resolution(points: &[&Point]) -> String {
             let omega = p.stat("frequency");
             let periods = p.stat("frequency_periods").mean.max(1.0);
             let step = omega.mean * p.sample_every;
-            let bound = step * step / (8.0 * std::f64::consts::PI * periods);
-            (
-                std::f64::consts::TAU / step,
-                bound,
-                bound / (omega.stderr / omega.mean),
-            )
+            let bound = step * step / (8.0 * PI * periods);
+            (TAU / step, bound, bound / (omega.stderr / omega.mean))
         })
         .filter(|w| w.0.is_finite())
         .fold((f64::INFINITY, 0.0f64, 0.0f64), |w, v| {
             (w.0.min(v.0), w.1.max(v.1), w.2.max(v.2))
         });
-    if worst.0.is_finite() {
-        format!(
-            "Sampling: at least {:.0} samples per measured period at every point, so interpolating the \
-             crossings limits the frequency to {:.1e} relative, at most {:.0}% of a point's standard error.\n\n",
-            worst.0,
-            worst.1,
-            100.0 * worst.2
-        )
-    } else {
-        String::new()
+    if !worst.0.is_finite() {
+        return String::new();
     }
+    format!(
+        "Sampling: at least {:.0} samples per measured period at every point, so interpolating the \
+         crossings limits the frequency to {:.1e} relative, at most {:.0}% of a point's standard error.\n\n",
+        worst.0,
+        worst.1,
+        100.0 * worst.2
+    )
 }
 
-fn table(points: &[&Point], dimension: usize) -> String {
-    let across = dimension > 1;
-    let mut md = String::from(
-        "Per sweep point (mean ± standard error over the runs that gave a value, n of N): the frequency over \
-         each prediction, the verdict for the plain adiabatic one, the relaxation time (or a lower bound where \
-         the runs ended first), the piston's late share of the kinetic energy against 1/N_free, and the cost \
-         (CPU seconds and collisions of all the point's runs).",
-    );
-    if across {
-        md.push_str(
-            " Across x also ωτ_x, the frequency over the exchange theory's (inertia and lag) and over the \
-             collisionless one (γ = 3), and the relaxation time the exchange theory predicts.\n\n\
-             | point | parameters | M/M_gas | v_piston/v_gas | ωτ_x | ω/ω_adiabatic (n) | ω/ω_ad+inertia | ω/ω_exchange | ω/ω_γ=3 | ω/ω_isothermal | adiabatic | τ relax (n) | τ exchange | excess left | piston share / 1/N_free | CPU s | collisions |\n\
-             |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
-        );
-    } else {
-        md.push_str(
-            "\n\n| point | parameters | M/M_gas | v_piston/v_gas | ω/ω_adiabatic (n) | ω/ω_ad+inertia | ω/ω_isothermal | adiabatic | τ relax (n) | excess left | piston share / 1/N_free | CPU s | collisions |\n\
-             |---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
-        );
-    }
-    for p in points {
-        let s = |name: &str| p.stat(name);
-        let both = |name: &str| pm(s(name).mean, s(name).stderr);
-        let f = s("frequency_ratio");
-        let tau = s("relaxation_time");
-        let relax = if p.relaxed() {
+/// A column of the per-point table: its header, whether only a gas with
+/// axes across x has it, and its cell.
+type Column = (&'static str, bool, fn(&Point) -> String);
+
+fn both(p: &Point, name: &str) -> String {
+    pm(p.stat(name).mean, p.stat(name).stderr)
+}
+
+const COLUMNS: &[Column] = &[
+    ("point", false, |p| p.id.to_string()),
+    ("parameters", false, |p| p.label()),
+    ("M/M_gas", false, |p| num(p.stat("mass_over_gas").mean)),
+    ("v_piston/v_gas", false, |p| num(p.stat("speed_ratio").mean)),
+    ("ωτ_x", true, |p| num(p.stat("omega_tau").mean)),
+    ("ω/ω_adiabatic (n)", false, |p| {
+        let n = p.stat("frequency_ratio").n;
+        format!("{} ({n}/{})", both(p, "frequency_ratio"), p.runs)
+    }),
+    ("ω/ω_ad+inertia", false, |p| {
+        both(p, "frequency_ratio_inertia")
+    }),
+    ("ω/ω_exchange", true, |p| {
+        both(p, "frequency_ratio_exchange")
+    }),
+    ("ω/ω_γ=3", true, |p| {
+        both(p, "frequency_ratio_collisionless")
+    }),
+    ("ω/ω_isothermal", false, |p| {
+        both(p, "frequency_ratio_isothermal")
+    }),
+    ("adiabatic", false, |p| {
+        verdict_text(&p.stat("frequency_ratio"))
+    }),
+    ("τ relax (n)", false, |p| {
+        let tau = p.stat("relaxation_time");
+        if p.relaxed() {
             format!("{} ({}/{})", pm(tau.mean, tau.stderr), tau.n, p.runs)
         } else {
             format!(
@@ -289,62 +281,42 @@ fn table(points: &[&Point], dimension: usize) -> String {
                 tau.n,
                 p.runs
             )
-        };
-        let mut row = format!(
-            "| {} | {} | {} | {} |",
-            p.id,
-            p.label(),
-            num(s("mass_over_gas").mean),
-            num(s("speed_ratio").mean),
-        );
-        if across {
-            let _ = write!(row, " {} |", num(s("omega_tau").mean));
         }
-        let _ = write!(
-            row,
-            " {} ({}/{}) | {} |",
-            pm(f.mean, f.stderr),
-            f.n,
-            p.runs,
-            both("frequency_ratio_inertia")
-        );
-        if across {
-            let _ = write!(
-                row,
-                " {} | {} |",
-                both("frequency_ratio_exchange"),
-                both("frequency_ratio_collisionless")
-            );
-        }
-        let _ = write!(
-            row,
-            " {} | {} | {} |",
-            both("frequency_ratio_isothermal"),
-            verdict_text(&f),
-            relax
-        );
-        if across {
-            let _ = write!(row, " {} |", num(s("relaxation_time_exchange").mean));
-        }
-        let _ = writeln!(
-            row,
-            " {} | {} / {} | {:.2} | {} |",
-            both("excess_left"),
-            both("piston_share"),
-            num(p.equipartition),
-            p.seconds,
-            count(p.collisions),
-        );
-        md.push_str(&row);
+    }),
+    ("τ exchange", true, |p| {
+        num(p.stat("relaxation_time_exchange").mean)
+    }),
+    ("excess left", false, |p| both(p, "excess_left")),
+    ("piston share / 1/N_free", false, |p| {
+        format!("{} / {}", both(p, "piston_share"), num(p.equipartition))
+    }),
+    ("CPU s", false, |p| format!("{:.2}", p.seconds)),
+    ("collisions", false, |p| count(p.collisions)),
+];
+
+/// Every point's results, one row each.
+fn table(points: &[&Point], across: bool) -> String {
+    let columns: Vec<&Column> = COLUMNS.iter().filter(|c| across || !c.1).collect();
+    let mut md = TABLE.trim_end().to_string();
+    if across {
+        md.push(' ');
+        md.push_str(TABLE_ACROSS.trim_end());
+    }
+    let headers: Vec<&str> = columns.iter().map(|c| c.0).collect();
+    let _ = write!(
+        md,
+        "\n\n| {} |\n|{}\n",
+        headers.join(" | "),
+        "---|".repeat(columns.len())
+    );
+    for p in points {
+        let cells: Vec<String> = columns.iter().map(|c| (c.2)(p)).collect();
+        let _ = writeln!(md, "| {} |", cells.join(" | "));
     }
     md
 }
 
-fn frequency_figure(
-    points: &[&Point],
-    dimension: usize,
-    figures: &mut Vec<Figure>,
-) -> anyhow::Result<String> {
+fn frequency_figure(points: &[&Point], dimension: usize, figures: &mut Vec<Figure>) -> String {
     let mut layers = Vec::new();
     for (i, (group, ps)) in groups(points).into_iter().enumerate() {
         let at = |p: &Point| (p.stat("mass_over_gas").mean, p.stat("frequency_ratio"));
@@ -369,10 +341,8 @@ fn frequency_figure(
         .map(|p| p.stat("mass_over_gas").mean)
         .filter(|m| m.is_finite() && *m > 0.0)
         .collect();
-    let (lo, hi) = (
-        mus.iter().copied().fold(f64::INFINITY, f64::min),
-        mus.iter().copied().fold(0.0, f64::max),
-    );
+    let lo = mus.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = mus.iter().copied().fold(0.0, f64::max);
     if hi > lo {
         layers.push(Layer::Line {
             points: (0..=100)
@@ -388,38 +358,34 @@ fn frequency_figure(
         });
     }
     let name = format!("piston_frequency_ratio_{dimension}d.svg");
-    let chart = ChartSpec {
-        title: format!("{dimension}D: measured over adiabatic frequency"),
-        x_label: "piston mass / gas mass, M/M_gas".into(),
-        y_label: "ω / ω_adiabatic".into(),
-        x_log: true,
-        layers,
-        ..Default::default()
-    };
     figures.push(Figure {
-        file: name.to_string(),
-        chart,
+        file: name.clone(),
+        chart: ChartSpec {
+            title: format!("{dimension}D: measured over adiabatic frequency"),
+            x_label: "piston mass / gas mass, M/M_gas".into(),
+            y_label: "ω / ω_adiabatic".into(),
+            x_log: true,
+            layers,
+            ..Default::default()
+        },
     });
-    Ok(name)
+    name
 }
 
 /// The piston's late share of the kinetic energy against 1/N_free, at the
 /// points whose runs all relaxed within a tenth of the run (so the late
-/// half is at equilibrium), with its cost.
-fn equipartition(points: &[&Point]) -> String {
+/// part is at equilibrium), with its cost.
+fn equipartition(points: &[&Point], late: f64) -> String {
     let settled: Vec<&&Point> = points
         .iter()
         .filter(|p| p.relaxed() && p.stat("relaxation_time").mean < 0.1 * p.duration)
         .collect();
-    let mut md = format!(
-        "The piston moves along x only, so it holds one of the N_free = d N_gas + 1 kinetic degrees of freedom: \
-         at equilibrium its mean share of the kinetic energy is 1/N_free, whatever its mass. The late share \
-         (averaged over the last half of each run) tests this where the runs relaxed within a tenth of their \
-         length: {} of {} points here (elsewhere the table's share measures how far from equilibrium the piston \
-         still is).\n\n",
-        settled.len(),
-        points.len()
-    );
+    let values = [
+        ("late", num(100.0 * late)),
+        ("settled", settled.len().to_string()),
+        ("points", points.len().to_string()),
+    ];
+    let mut md = fill(EQUIPARTITION, &values);
     if settled.is_empty() {
         return md;
     }
@@ -427,11 +393,13 @@ fn equipartition(points: &[&Point]) -> String {
         "| point | parameters | piston share | 1/N_free | share × N_free | z | oscillator share (× N_free) | CPU s |\n|---|---|---|---|---|---|---|---|\n",
     );
     let mut within = 0;
+    let mut oscillator = 0.0;
     for p in &settled {
         let share = p.stat("piston_share");
         let z = (share.mean - p.equipartition) / share.stderr;
-        within += usize::from(z.abs() <= 4.0);
+        within += usize::from(z.abs() < 4.0);
         let osc = p.stat("oscillator_share");
+        oscillator += osc.mean / p.equipartition / settled.len() as f64;
         let _ = writeln!(
             md,
             "| {} | {} | {} | {} | {} | {:+.1} | {} | {:.2} |",
@@ -448,9 +416,10 @@ fn equipartition(points: &[&Point]) -> String {
     let _ = writeln!(
         md,
         "\n{within} of {} agree with 1/N_free within four standard errors. The oscillator share (its kinetic \
-         plus adiabatic potential energy, per 1/N_free) is about two degrees of freedom, as for a harmonic \
-         oscillator; the summary table sets it beside its microcanonical mean.\n",
-        settled.len()
+         plus adiabatic potential energy, per 1/N_free) averages {} degrees of freedom over these points (a \
+         harmonic oscillator's is two); the summary table sets it beside its microcanonical mean.\n",
+        settled.len(),
+        num(oscillator)
     );
     md
 }
@@ -474,5 +443,15 @@ mod tests {
         assert_eq!(verdict(&s(0.8, 0.01)), Verdict::Breaks);
         assert_eq!(verdict(&s(0.99, 0.01)), Verdict::Agrees);
         assert_eq!(verdict(&s(0.98, 0.02)), Verdict::Unclear);
+    }
+
+    #[test]
+    fn every_placeholder_is_filled() {
+        let values = [
+            ("late", "50".into()),
+            ("settled", "1".into()),
+            ("points", "2".into()),
+        ];
+        assert!(crate::stats::fill::unfilled(&fill(EQUIPARTITION, &values)).is_empty());
     }
 }

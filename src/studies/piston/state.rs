@@ -56,13 +56,6 @@ impl Geometry {
         })
     }
 
-    /// Free kinetic degrees of freedom: d per gas particle, and one for the
-    /// piston, which moves along x only (in 1D that is 2 N_side + 1 with two
-    /// equal sides; a wall piston in d dimensions gives d N_gas + 1).
-    pub fn degrees_of_freedom(&self) -> f64 {
-        (self.dimension * (self.particles[0] + self.particles[1]) + 1) as f64
-    }
-
     /// Reaches (left, right) with the piston at x: the length along x each
     /// gas's centres can reach, a radius short of the wall and of the piston.
     pub fn reaches(&self, x: f64) -> [f64; 2] {
@@ -178,15 +171,8 @@ impl Samples {
             total: get("kinetic_energy")?.value.clone(),
         };
         let n = samples.t.len();
-        if [
-            &samples.piston,
-            &samples.left,
-            &samples.right,
-            &samples.total,
-        ]
-        .iter()
-        .any(|v| v.len() != n)
-        {
+        let series = [&samples.piston, &samples.left, &samples.right];
+        if series.iter().chain([&&samples.total]).any(|v| v.len() != n) {
             return Err("the piston series have different lengths".into());
         }
         if n < 2 {

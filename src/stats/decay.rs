@@ -1,28 +1,20 @@
-//! Estimators of the piston analysis, on plain sampled signals: the
-//! relaxation time of the oscillator energy and the late share of kinetic
-//! energy.
+//! How long a decaying excess takes to fall to 1/e of its start, smoothed
+//! over a window, and a lower bound on that time when the record ends first.
 
-/// Relaxation time: when the excess e(t) (over the level it relaxes to,
-/// subtracted by the caller), averaged over a centred window of `window`
-/// time units, first falls to 1/e of its starting value, interpolated
-/// linearly between samples.
+/// When the excess e(t) (over the level it relaxes to, subtracted by the
+/// caller), averaged over a centred window of `window` time units, first
+/// falls to 1/e of its starting value, interpolated linearly between
+/// samples, from t[0].
 ///
-/// The piston's decay is not one exponential: a large excess decays fast
-/// while the motion is far from adiabatic, then ever more slowly as the
-/// gases warm, and near equilibrium the oscillator energy wanders for long
-/// times. A least-squares exponential over the whole record mixes these
-/// scales and follows the late wandering; the first passage to 1/e is the
-/// time the piston takes to give away 63% of its excess, whatever the shape
-/// of the decay. The signal is the oscillator energy, not the piston's
-/// kinetic energy, so the passage does not depend on the phase of the
-/// oscillation and is not quantised to its period; averaging over one
-/// period (the caller's `window`) removes what is left of the swing within a
-/// period (a fast compression departs from the adiabat and back), or over
-/// the unsmoothed passage time if that is shorter. The starting value is the
-/// exact initial state. For an exponential the window delays the passage by
-/// tau ln(sinh(x)/x), x = window/(2 tau): at most 4% of tau, for a window
-/// of one tau. None when the record ends first (see `decay_bound`) or there
-/// is no excess to relax.
+/// The first passage rather than a fitted exponential: a decay that is not
+/// one exponential (fast at first, then ever slower, then wandering) would
+/// pull a fit to its late wandering, while the passage is the time to give
+/// away 63% of the excess whatever the shape. The window (say one period of
+/// an oscillation whose energy this is) removes a ripple within it, and is
+/// never longer than the unsmoothed passage; for an exponential it delays
+/// the passage by tau ln(sinh(x)/x), x = window/(2 tau): at most 4% of tau.
+/// None when the record ends first (see `decay_bound`) or there is no
+/// excess to relax.
 pub fn relaxation_time(t: &[f64], excess: &[f64], window: f64) -> Option<f64> {
     let start = *excess.first()?;
     if start.is_nan() || start <= 0.0 || t.len() != excess.len() {
@@ -77,23 +69,6 @@ pub fn decay_bound(span: f64, left: f64) -> f64 {
     } else {
         span / -left.ln()
     }
-}
-
-/// Mean of the last `fraction` of a record (at least one sample).
-pub fn late_mean(values: &[f64], fraction: f64) -> f64 {
-    let n = values.len();
-    let from = (((1.0 - fraction.clamp(0.0, 1.0)) * n as f64) as usize).min(n.saturating_sub(1));
-    if n == 0 {
-        return f64::NAN;
-    }
-    values[from..].iter().sum::<f64>() / (n - from) as f64
-}
-
-/// Time-averaged share of the kinetic energy held by the piston over the last
-/// `fraction` of the run.
-pub fn late_share(piston: &[f64], total: &[f64], fraction: f64) -> f64 {
-    let shares: Vec<f64> = piston.iter().zip(total).map(|(p, k)| p / k).collect();
-    late_mean(&shares, fraction)
 }
 
 #[cfg(test)]
@@ -223,12 +198,5 @@ mod tests {
         assert_eq!(relaxation_time(&t, &slow, 5.0), None);
         let negative: Vec<f64> = t.iter().map(|s| -(-(s - 3.0) / 10.0).exp()).collect();
         assert_eq!(relaxation_time(&t, &negative, 5.0), None);
-    }
-
-    #[test]
-    fn late_mean_and_share() {
-        assert_eq!(late_mean(&[1.0, 2.0, 3.0, 5.0], 0.5), 4.0);
-        assert_eq!(late_mean(&[1.0, 2.0], 0.0), 2.0);
-        assert_eq!(late_share(&[1.0, 1.0], &[4.0, 2.0], 1.0), 0.375);
     }
 }
