@@ -4,7 +4,7 @@
 /// When the excess e(t) (over the level it relaxes to, subtracted by the
 /// caller), averaged over a centred window of `window` time units, first
 /// falls to 1/e of its starting value, interpolated linearly between
-/// samples, from t[0].
+/// samples, from `t[0]`.
 ///
 /// The first passage rather than a fitted exponential: a decay that is not
 /// one exponential (fast at first, then ever slower, then wandering) would
