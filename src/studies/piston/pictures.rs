@@ -97,6 +97,8 @@ fn answer(
     let omega = |name: &str| stat(name).mean;
     let (ad, inertia) = (omega("omega_adiabatic"), omega("omega_adiabatic_inertia"));
     let (small, iso) = (omega("omega_adiabatic_small"), omega("omega_isothermal"));
+    let start = omega("omega_adiabatic_start");
+    let longer = 100.0 * (start / measured.mean - 1.0);
     let ratios = [
         "frequency_ratio",
         "frequency_ratio_inertia",
@@ -138,6 +140,8 @@ fn answer(
         ("pad", num(period(ad))),
         ("inr", num(inertia)),
         ("pinr", num(period(inertia))),
+        ("st", num(start)),
+        ("pst", num(period(start))),
         ("sm", num(small)),
         ("psm", num(period(small))),
         ("iso", num(iso)),
@@ -154,6 +158,23 @@ fn answer(
         ("r_ad", both(&ratios[0])),
         ("r_in", both(&ratios[1])),
         ("r_iso", both(&ratios[2])),
+        (
+            "r_st",
+            pm(measured.mean / start, measured.stderr / start),
+        ),
+        (
+            "dev",
+            format!(
+                "{:.1}% {} than predicted ({})",
+                longer.abs(),
+                if longer < 0.0 { "shorter" } else { "longer" },
+                if (measured.mean / start - 1.0).abs() <= 4.0 * measured.stderr / start {
+                    "within four standard errors"
+                } else {
+                    "more than four standard errors off"
+                }
+            ),
+        ),
         ("verdict", verdict(&ratios[0], &ratios[1], &ratios[2])),
         ("speed", num(speed)),
         ("slow", slow(speed, fits(&ratios[0]) || fits(&ratios[1]))),
