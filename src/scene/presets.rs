@@ -1,5 +1,6 @@
-//! The seeds' scenes, bundled and runnable by name (`preset = "..."` in
-//! `[scene]`, see `study list`). Each is plain descriptor TOML, so a preset is
+//! The scenes of the texts bonkers grew from (MacKay's, the Imperial
+//! project's), bundled and runnable by name (`preset = "..."` in `[scene]`,
+//! see `study list`). Each is plain descriptor TOML, so a preset is
 //! exactly what a user could have written.
 
 use crate::model::scene::SceneSpec;
@@ -29,7 +30,7 @@ velocities = { kind = "maxwell", temperature = 1.0 }
     Preset {
         name: "mackay-piston",
         about: "MacKay: five light and five heavier rods either side of a piston of mass 40, all with equal \
-                velocities. The seed names no masses for this run (the heavier gas is \"green\", and the \
+                velocities. MacKay's text names no masses for this run (the heavier gas is \"green\", and the \
                 piston starts with \"roughly 75%\" of the energy): with equal velocities the piston's \
                 share is 20 / (20 + sum(m) / 2), so light masses ~1 and heavy masses 1.5-1.7 give 74-77%; \
                 the ten-rod run's ~4 would give 62%",
@@ -133,7 +134,7 @@ velocities = { kind = "explicit", velocities = [[1.0, 1.0], [0.0, 0.0], [2.0, 2.
     },
     Preset {
         name: "imperial-sticking-masses",
-        about: "Imperial: the five-disk sticking case with masses 3, 2, 1, 4, 5 (momenta as in the seed)",
+        about: "Imperial: the five-disk sticking case with masses 3, 2, 1, 4, 5 (momenta as in the Imperial project's handout)",
         toml: r#"
 dimension = 2
 box = [100.0, 100.0]

@@ -7,7 +7,7 @@ use super::charts::{self, Runs};
 use super::dimple::{self, central_share, has_dimple, independent_samples};
 use super::ensemble::Ensemble;
 use super::settling;
-use super::tests_of::{Particle, Tests, tests_of};
+use super::tests_of::{MIN_EXPECTED, Particle, Tests, tests_of};
 use crate::model::chart::ChartSpec;
 use crate::model::report::{Figure, ReportSection};
 use crate::model::run_output::RunOutput;
@@ -291,6 +291,15 @@ impl Parts {
             num(cost),
             count(collisions),
         );
+        let tested = |p: &&Particle| p.exact.is_some() || p.gaussian.is_some() || p.halves.is_some();
+        if !t.particles.iter().any(|p| tested(&p)) {
+            let _ = writeln!(
+                self.per_particle,
+                "**{}**: no bin of any particle's v_x histogram expects {} counts in a run (too few samples a run), so no per-particle test is made.\n",
+                g.label, MIN_EXPECTED
+            );
+            return;
+        }
         let _ = writeln!(
             self.per_particle,
             "**{}**, each particle (left to right): z of its v_x histogram against the exact law, against the Gaussian, and of its early against its late half.\n\n\
