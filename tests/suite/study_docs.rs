@@ -1,7 +1,7 @@
 //! docs/descriptor.md tells the truth: its annotated example validates with
 //! every name it uses and runs end to end (its `--quick` version), its table
 //! of observables is the observable catalogue, and it lists every analysis
-//! option bonkers knows.
+//! option bonkers knows and, per analysis, every result and need.
 
 use crate::study_common::run_options;
 use bonkers::descriptor::load::{parse, quick};
@@ -99,6 +99,46 @@ fn every_analysis_option_is_documented() {
             let row = format!("| `{}` | `{}` |", a.name(), o.name);
             assert!(doc.contains(&row), "docs/descriptor.md lacks the row {row}");
         }
+    }
+}
+
+/// The text of the subsection `#### `<name>``, up to the next heading.
+fn subsection<'a>(doc: &'a str, name: &str) -> Option<&'a str> {
+    let heading = format!("#### `{name}`\n");
+    let rest = &doc[doc.find(&heading)? + heading.len()..];
+    Some(&rest[..rest.find("\n#").map_or(rest.len(), |end| end + 1)])
+}
+
+/// Every analysis has its subsection, which names (in backticks) every
+/// result it can write, says each of its needs as the observables table
+/// does (`catalogue::need_text`), and links its physics page.
+#[test]
+fn every_analysis_result_is_documented() {
+    let doc = doc();
+    for a in REGISTRY {
+        let name = a.name();
+        let text = subsection(&doc, name)
+            .unwrap_or_else(|| panic!("docs/descriptor.md lacks the heading #### `{name}`"));
+        let missing: Vec<&str> = (a.results().iter().copied())
+            .filter(|r| !text.contains(&format!("`{r}`")))
+            .collect();
+        assert!(
+            missing.is_empty(),
+            "docs/descriptor.md, #### `{name}`, does not document the results {}",
+            missing.join(", ")
+        );
+        for need in a.needs() {
+            let need = catalogue::need_text(*need);
+            assert!(
+                text.contains(&need),
+                "docs/descriptor.md, #### `{name}`, does not say it needs {need}"
+            );
+        }
+        let link = format!("]({name}.md)");
+        assert!(
+            text.contains(&link),
+            "docs/descriptor.md, #### `{name}`, does not link {name}.md"
+        );
     }
 }
 
