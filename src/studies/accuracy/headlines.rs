@@ -232,12 +232,10 @@ fn along_length(lengths: &[&Length], model: f64) -> String {
         .filter(|l| l.cpu > 0.0 && l.scatter() > 0.0)
         .map(|l| (l.cpu, l.scatter()))
         .collect();
-    let (Some(lo), Some(hi)) = (pts.first(), pts.last()) else {
-        return String::new();
-    };
     if pts.len() < 2 {
         return String::new();
     }
+    let (lo, hi) = (pts[0], pts[pts.len() - 1]);
     let mut values = vec![
         ("name", lengths[0].name.clone()),
         ("from", num(lengths[0].duration)),

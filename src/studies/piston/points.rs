@@ -2,6 +2,7 @@
 //! statistics of every result the report shows, its cost), and the points
 //! grouped by dimension and by the parameters other than the piston's mass.
 
+use crate::model::chart::{Layer, Paint};
 use crate::stats::decay::decay_bound;
 use crate::stats::ensemble::Runs;
 use crate::stats::groups::first_seen;
@@ -118,4 +119,26 @@ pub fn groups<'a, 'b>(points: &[&'a Point<'b>]) -> Vec<(String, Vec<&'a Point<'b
         .into_iter()
         .map(|g| (g[0].group.clone(), g))
         .collect()
+}
+
+/// Points at (x, a result's statistics) as error bars (mean ± standard
+/// error; with `floor`, the lower end at least the mean over it, for a log
+/// axis) and markers.
+pub fn marked(at: &[(f64, Stats)], floor: Option<f64>, paint: Paint, label: String) -> [Layer; 2] {
+    let low = |s: &Stats| match floor {
+        Some(f) => (s.mean - s.stderr).max(s.mean / f),
+        None => s.mean - s.stderr,
+    };
+    let bars = at.iter().map(|(x, s)| (*x, low(s), s.mean, s.mean + s.stderr));
+    [
+        Layer::ErrorBars {
+            bars: bars.collect(),
+            paint,
+        },
+        Layer::Markers {
+            points: at.iter().map(|(x, s)| (*x, s.mean)).collect(),
+            paint,
+            label: Some(label),
+        },
+    ]
 }

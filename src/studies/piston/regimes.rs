@@ -11,7 +11,7 @@ use crate::stats::ensemble::Runs;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
 use crate::stats::summary::Stats;
-use crate::studies::piston::points::{Point, by_dimension, groups, points};
+use crate::studies::piston::points::{Point, by_dimension, groups, marked, points};
 use crate::studies::piston::relaxation::relaxation;
 use std::f64::consts::{PI, TAU};
 use std::fmt::Write;
@@ -113,12 +113,18 @@ fn boundaries(points: &[&Point], across: bool) -> String {
         md.push_str(&boundary(points, result, what, across));
     }
     md.push('\n');
-    md.push_str(PARAMETERS.trim_end());
+    md.push_str(&prose(PARAMETERS, PARAMETERS_ACROSS, across));
+    md.push_str("\n\n");
+    md
+}
+
+/// A text, and where the gas has axes across x, what it adds there.
+fn prose(text: &str, across_text: &str, across: bool) -> String {
+    let mut md = text.trim_end().to_string();
     if across {
         md.push(' ');
-        md.push_str(PARAMETERS_ACROSS.trim_end());
+        md.push_str(across_text.trim_end());
     }
-    md.push_str("\n\n");
     md
 }
 
@@ -286,11 +292,7 @@ const COLUMNS: &[Column] = &[
 /// Every point's results, one row each.
 fn table(points: &[&Point], across: bool) -> String {
     let columns: Vec<&Column> = COLUMNS.iter().filter(|c| across || !c.1).collect();
-    let mut md = TABLE.trim_end().to_string();
-    if across {
-        md.push(' ');
-        md.push_str(TABLE_ACROSS.trim_end());
-    }
+    let mut md = prose(TABLE, TABLE_ACROSS, across);
     let headers: Vec<&str> = columns.iter().map(|c| c.0).collect();
     let _ = write!(
         md,
@@ -308,22 +310,10 @@ fn table(points: &[&Point], across: bool) -> String {
 fn frequency_figure(points: &[&Point], dimension: usize, figures: &mut Vec<Figure>) -> String {
     let mut layers = Vec::new();
     for (i, (group, ps)) in groups(points).into_iter().enumerate() {
-        let at = |p: &Point| (p.stat("mass_over_gas").mean, p.stat("frequency_ratio"));
-        layers.push(Layer::ErrorBars {
-            bars: ps
-                .iter()
-                .map(|p| {
-                    let (mu, s) = at(p);
-                    (mu, s.mean - s.stderr, s.mean, s.mean + s.stderr)
-                })
-                .collect(),
-            paint: colour(i),
-        });
-        layers.push(Layer::Markers {
-            points: ps.iter().map(|p| (at(p).0, at(p).1.mean)).collect(),
-            paint: colour(i),
-            label: Some(group),
-        });
+        let at: Vec<(f64, Stats)> = (ps.iter())
+            .map(|p| (p.stat("mass_over_gas").mean, p.stat("frequency_ratio")))
+            .collect();
+        layers.extend(marked(&at, None, colour(i), group));
     }
     let mus: Vec<f64> = points
         .iter()

@@ -166,12 +166,8 @@ fn path_figure(
 ) {
     let s = &first.samples;
     let mut layers = vec![Layer::Line {
-        points: s
-            .t
-            .iter()
-            .zip(&s.x)
-            .filter(|(t, _)| **t <= horizon)
-            .map(|(t, x)| (*t, *x))
+        points: (s.t.iter().zip(&s.x))
+            .filter_map(|(t, x)| (*t <= horizon).then_some((*t, *x)))
             .collect(),
         paint: Paint::solid(PURPLE),
         width: 3,
