@@ -1,6 +1,7 @@
 //! The piston sweep, point by point: each point's runs summarised (the
-//! statistics of every result the report shows, its cost), and the points
-//! grouped by dimension and by the parameters other than the piston's mass.
+//! statistics of every result the report shows, its cost), the points
+//! grouped by dimension and by the parameters other than the piston's mass,
+//! and drawn with their error bars.
 
 use crate::model::chart::{Layer, Paint};
 use crate::stats::decay::decay_bound;
