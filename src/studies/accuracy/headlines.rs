@@ -7,6 +7,7 @@
 //! (`Study::error_model`) beside what was measured; and a planning table.
 
 use super::effort::{VERDICTS, exponent};
+use super::section::replicas_line;
 use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
@@ -14,7 +15,7 @@ use crate::stats::error_model::{ErrorModel, scatter_uncertainty, scatter_uncerta
 use crate::stats::fill::fill;
 use crate::stats::format::{num, pm};
 use crate::stats::groups::first_seen;
-use crate::stats::line::{line, log_slope};
+use crate::stats::line::{Sums, log_slope};
 use crate::stats::named::named;
 use crate::stats::summary::{Stats, scalar};
 use std::fmt::Write;
@@ -45,21 +46,21 @@ impl Length<'_> {
         let s = self.stats();
         s.std / s.mean.abs()
     }
-    /// Relative standard error of the mean of k runs, measured as the
-    /// spread of the means of disjoint groups of k consecutive replicas
-    /// (None with fewer than 4 groups).
-    pub fn grouped(&self, k: usize) -> Option<(f64, usize)> {
-        let groups = self.values.len() / k;
-        if groups < 4 {
-            return None;
-        }
-        let means: Vec<f64> = self
-            .values
-            .chunks_exact(k)
-            .map(|c| c.iter().sum::<f64>() / k as f64)
-            .collect();
-        let s = Stats::of(&means);
-        Some((s.std / self.stats().mean.abs(), groups))
+    /// For k = 1, 2, 4, ... while there are at least 4 groups: k, the
+    /// relative standard error of the mean of k runs, measured as the
+    /// spread of the means of disjoint groups of k consecutive replicas,
+    /// and the number of groups.
+    pub fn by_replicas(&self) -> Vec<(usize, f64, usize)> {
+        let mean = self.stats().mean.abs();
+        let k = (0..).map(|i| 1usize << i);
+        (k.take_while(|k| self.values.len() / k >= 4))
+            .map(|k| {
+                let means: Vec<f64> = (self.values.chunks_exact(k))
+                    .map(|c| c.iter().sum::<f64>() / k as f64)
+                    .collect();
+                (k, Stats::of(&means).std / mean, self.values.len() / k)
+            })
+            .collect()
     }
 }
 
@@ -231,12 +232,10 @@ fn along_length(lengths: &[&Length], model: f64) -> String {
         .filter(|l| l.cpu > 0.0 && l.scatter() > 0.0)
         .map(|l| (l.cpu, l.scatter()))
         .collect();
-    let (Some(lo), Some(hi)) = (pts.first(), pts.last()) else {
-        return String::new();
-    };
     if pts.len() < 2 {
         return String::new();
     }
+    let (lo, hi) = (pts[0], pts[pts.len() - 1]);
     let mut values = vec![
         ("name", lengths[0].name.clone()),
         ("from", num(lengths[0].duration)),
@@ -262,8 +261,7 @@ fn along_length(lengths: &[&Length], model: f64) -> String {
 fn along_replicas(best: &Length) -> String {
     let mut rows = String::new();
     let mut pts = Vec::new();
-    let mut k = 1;
-    while let Some((se, groups)) = best.grouped(k) {
+    for (k, se, groups) in best.by_replicas() {
         let cost = k as f64 * best.cpu;
         let u = scatter_uncertainty(groups);
         pts.push((cost, se, u));
@@ -275,7 +273,6 @@ fn along_replicas(best: &Length) -> String {
             num(100.0 * best.model.stderr(k as u32)),
             num(cost)
         );
-        k *= 2;
     }
     if rows.is_empty() {
         return rows;
@@ -300,11 +297,9 @@ fn weighted_slope(pts: &[(f64, f64, f64)]) -> Option<(f64, f64)> {
     if pts.len() < 3 || pts.iter().any(|p| !(p.0 > 0.0 && p.1 > 0.0 && p.2 > 0.0)) {
         return None;
     }
-    let w: Vec<f64> = pts.iter().map(|p| 1.0 / (p.2 * p.2)).collect();
-    let x: Vec<f64> = pts.iter().map(|p| p.0.ln()).collect();
-    let y: Vec<f64> = pts.iter().map(|p| p.1.ln()).collect();
-    let (slope, se, _) = line(&x, &y, Some(&w));
-    (!se.is_nan()).then_some((slope, se))
+    let sums = Sums::of_errors(pts.iter().map(|p| (p.0.ln(), p.1.ln(), p.2)));
+    let se = sums.slope_error();
+    se.is_finite().then(|| (sums.slope(), se))
 }
 
 /// For X % error, the replicas and CPU seconds: measured σ₁ and the model's.
@@ -395,15 +390,11 @@ fn chart(all: &[Length], names: &[&'static str]) -> ChartSpec {
             continue;
         };
         let paint = colour(i);
-        let mut pts = Vec::new();
-        let mut k = 1;
-        while let Some((se, _)) = best.grouped(k) {
-            pts.push((k as f64 * best.cpu, se));
-            k *= 2;
-        }
         let label = best.model.label;
         layers.push(Layer::Markers {
-            points: pts,
+            points: (best.by_replicas().iter())
+                .map(|&(k, se, _)| (k as f64 * best.cpu, se))
+                .collect(),
             paint,
             label: Some(format!("{study}: {label}, k replicas")),
         });
@@ -424,20 +415,8 @@ fn chart(all: &[Length], names: &[&'static str]) -> ChartSpec {
             paint: paint.faded(0.45),
             label: Some(format!("{study}: one run per length")),
         });
-        let c0 = best.cpu;
-        let s0 = best.model.scatter;
-        layers.push(Layer::Line {
-            points: (0..=15)
-                .map(|j| {
-                    let c = c0 * 10f64.powf(j as f64 / 5.0);
-                    (c, s0 * (c0 / c).sqrt())
-                })
-                .collect(),
-            paint,
-            width: 2,
-            dashed: true,
-            label: Some(format!("{study}: model, replicas")),
-        });
+        let label = format!("{study}: model, replicas");
+        layers.push(replicas_line(best.cpu, best.model.scatter, 15, paint, label));
     }
     ChartSpec {
         title: "Headline results: error against CPU time".into(),

@@ -3,7 +3,7 @@
 //! and a table per scene.
 
 use super::groups::{Group, error, groups};
-use crate::model::chart::{ChartSpec, Layer, colour};
+use crate::model::chart::{ChartSpec, Layer, Paint, colour};
 use crate::model::descriptor::Integrator;
 use crate::model::report::{Figure, ReportSection};
 use crate::model::run_output::RunOutput;
@@ -14,6 +14,7 @@ use crate::stats::groups::first_seen;
 use crate::stats::line::log_slope;
 use crate::stats::named::named;
 use crate::stats::summary::Stats;
+use crate::stats::table::table_row;
 use std::fmt::Write;
 
 const INTRO: &str = include_str!("intro.md");
@@ -293,19 +294,8 @@ fn cost_chart(all: &[Group], scenes: &[String]) -> ChartSpec {
         }
         let s = scatter(reference);
         if s > 1e-9 && reference.cpu > 0.0 {
-            let c0 = reference.cpu;
-            layers.push(Layer::Line {
-                points: (0..=20)
-                    .map(|i| {
-                        let c = c0 * 10f64.powf(i as f64 / 5.0);
-                        (c, s * (c0 / c).sqrt())
-                    })
-                    .collect(),
-                paint,
-                width: 2,
-                dashed: true,
-                label: Some(format!("{scene}: exact (statistical)")),
-            });
+            let label = format!("{scene}: exact (statistical)");
+            layers.push(replicas_line(reference.cpu, s, 20, paint, label));
         }
     }
     ChartSpec {
@@ -315,6 +305,23 @@ fn cost_chart(all: &[Group], scenes: &[String]) -> ChartSpec {
         x_log: true,
         y_log: true,
         layers,
+    }
+}
+
+/// Dashed: one run's error `s` at its cost `c0`, falling as cost^(−1/2)
+/// with replicas, over `fifths` fifths of a decade.
+pub fn replicas_line(c0: f64, s: f64, fifths: u32, paint: Paint, label: String) -> Layer {
+    Layer::Line {
+        points: (0..=fifths)
+            .map(|i| {
+                let c = c0 * 10f64.powf(i as f64 / 5.0);
+                (c, s * (c0 / c).sqrt())
+            })
+            .collect(),
+        paint,
+        width: 2,
+        dashed: true,
+        label: Some(label),
     }
 }
 
@@ -351,37 +358,20 @@ fn table(scene: &str, all: &[Group]) -> String {
             pm(s.mean, s.stderr)
         }
     };
-    let exact_row = |g: &Group| g.integrator == Integrator::Exact;
+    let compared: [fn(&Group) -> &Stats; 3] =
+        [|g| &g.pressure, |g| &g.collision_rate, |g| &g.frequency];
     for g in rows {
-        let r = reference.filter(|_| !exact_row(g));
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
-            g.integrator.name(),
-            if g.dt.is_nan() {
-                "–".into()
-            } else {
-                num(g.dt)
-            },
-            g.runs,
-            stat(&g.pressure),
-            err(&g.pressure, r.map(|r| &r.pressure)),
-            stat(&g.collision_rate),
-            err(&g.collision_rate, r.map(|r| &r.collision_rate)),
-            stat(&g.frequency),
-            err(&g.frequency, r.map(|r| &r.frequency)),
-            num(g.energy_drift),
-            opt(g.depth_max),
-            opt(g.depth_mean),
-            opt(g.longest),
-            opt(g.stuck),
-            if exact_row(g) {
-                "–".into()
-            } else {
-                format!("{} %", num(100.0 * g.repeat_share))
-            },
-            num(g.cpu),
-        );
+        let exact_row = g.integrator == Integrator::Exact;
+        let r = reference.filter(|_| !exact_row);
+        let mut cells = vec![g.integrator.name().to_string(), opt(g.dt), g.runs.to_string()];
+        for of in compared {
+            cells.extend([stat(of(g)), err(of(g), r.map(of))]);
+        }
+        let repeats = format!("{} %", num(100.0 * g.repeat_share));
+        cells.extend([num(g.energy_drift), opt(g.depth_max), opt(g.depth_mean)]);
+        cells.extend([opt(g.longest), opt(g.stuck)]);
+        cells.extend([if exact_row { "–".into() } else { repeats }, num(g.cpu)]);
+        md.push_str(&table_row(&cells));
     }
     md
 }

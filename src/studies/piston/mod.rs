@@ -17,7 +17,6 @@ use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
 use crate::model::report::ReportSection;
 use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
 use crate::scene::{Built, OnBuilt, on_built};
 use crate::stats::decay::relaxation_time;
 use crate::stats::ensemble::Runs;
@@ -325,7 +324,7 @@ fn gas_counts(d: &Descriptor) -> Option<(usize, [usize; 2])> {
 /// `[[case]]`s of those names, where it has them), where the theory holds
 /// across the sweep, how the piston relaxes, and how each number was
 /// measured.
-fn section(runs: &[(RunSpec, RunOutput)], o: &Options) -> anyhow::Result<ReportSection> {
+fn section(runs: &Runs, o: &Options) -> anyhow::Result<ReportSection> {
     let mut figures = Vec::new();
     let mut md = pictures::mackay_case(runs, &mut figures)?;
     md.push_str(&wall::wall_cases(runs, &mut figures)?);

@@ -1,12 +1,13 @@
 //! The piston sweep, point by point: each point's runs summarised (the
-//! statistics of every result the report shows, its cost), and the points
-//! grouped by dimension and by the parameters other than the piston's mass.
+//! statistics of every result the report shows, its cost), the points
+//! grouped by dimension and by the parameters other than the piston's mass,
+//! and drawn with their error bars.
 
-use super::RESULTS;
-use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
+use crate::model::chart::{Layer, Paint};
 use crate::stats::decay::decay_bound;
+use crate::stats::ensemble::Runs;
 use crate::stats::groups::first_seen;
+use crate::stats::point_runs::{PointRuns, by_point};
 use crate::stats::summary::Stats;
 use std::collections::BTreeMap;
 
@@ -14,7 +15,7 @@ const MASS_KEY: &str = "scene.piston.mass";
 const PRESET_KEY: &str = "scene.preset";
 
 /// One sweep point's runs, summarised.
-pub struct Point {
+pub struct Point<'a> {
     pub id: u64,
     pub dimension: usize,
     /// Swept parameters other than the piston mass and the preset
@@ -24,63 +25,45 @@ pub struct Point {
     pub runs: usize,
     pub duration: f64,
     pub sample_every: f64,
-    stats: BTreeMap<&'static str, Stats>,
     /// 1/N_free.
     pub equipartition: f64,
     pub seconds: f64,
     pub collisions: u64,
+    of: PointRuns<'a>,
 }
 
 /// The sweep's points in order of their ids (cases are not the sweep's).
-pub fn points(runs: &[(RunSpec, RunOutput)]) -> Vec<Point> {
-    let mut by_id: BTreeMap<u64, Vec<&(RunSpec, RunOutput)>> = BTreeMap::new();
-    for r in runs.iter().filter(|(s, _)| s.case.is_none()) {
-        by_id.entry(r.0.point_id).or_default().push(r);
-    }
-    by_id
-        .into_iter()
-        .map(|(id, rs)| {
-            let spec = &rs[0].0;
+pub fn points(runs: &Runs) -> Vec<Point<'_>> {
+    (by_point(runs).into_iter())
+        .filter(|p| p.spec.case.is_none())
+        .map(|of| {
+            let spec = of.spec;
             let group: Vec<String> = spec
                 .params
                 .iter()
                 .filter(|(k, _)| k != MASS_KEY && k != PRESET_KEY)
                 .map(|(k, v)| format!("{}={v}", k.rsplit('.').next().unwrap_or(k)))
                 .collect();
-            let stats = RESULTS
-                .iter()
-                .map(|&name| {
-                    let v: Vec<f64> = rs
-                        .iter()
-                        .filter_map(|r| r.1.scalar(name))
-                        .filter(|v| v.is_finite())
-                        .collect();
-                    (name, Stats::of(&v))
-                })
-                .collect();
             Point {
-                id,
-                dimension: crate::scene::resolve(&spec.descriptor.scene)
-                    .ok()
-                    .and_then(|s| s.dimension)
-                    .unwrap_or(0),
+                id: spec.point_id,
+                dimension: of.scene().and_then(|s| s.dimension).unwrap_or(0),
                 group: group.join(", "),
-                mass: rs[0].1.scalar("mass_ratio").unwrap_or(f64::NAN),
-                runs: rs.len(),
+                mass: of.first("mass_ratio"),
+                runs: of.outs.len(),
                 duration: spec.descriptor.run.duration.unwrap_or(f64::NAN),
                 sample_every: spec.descriptor.run.sample_every.unwrap_or(f64::NAN),
-                stats,
                 equipartition: super::theory(&spec.descriptor, "piston_share").unwrap_or(f64::NAN),
-                seconds: rs.iter().map(|r| r.1.wall_seconds).sum(),
-                collisions: rs.iter().map(|r| r.1.collisions).sum(),
+                seconds: of.outs.iter().map(|o| o.wall_seconds).sum(),
+                collisions: of.collisions(),
+                of,
             }
         })
         .collect()
 }
 
-impl Point {
+impl Point<'_> {
     pub fn stat(&self, name: &str) -> Stats {
-        self.stats.get(name).copied().unwrap_or(Stats::of(&[]))
+        self.of.stat(name)
     }
 
     /// "M=100, energy=10, per_side=5" (the mass alone when nothing else is swept).
@@ -123,7 +106,7 @@ impl Point {
 }
 
 /// The points of each dimension, in order of dimension.
-pub fn by_dimension(points: &[Point]) -> Vec<(usize, Vec<&Point>)> {
+pub fn by_dimension<'a, 'b>(points: &'a [Point<'b>]) -> Vec<(usize, Vec<&'a Point<'b>>)> {
     let mut out: BTreeMap<usize, Vec<&Point>> = BTreeMap::new();
     for p in points {
         out.entry(p.dimension).or_default().push(p);
@@ -132,9 +115,31 @@ pub fn by_dimension(points: &[Point]) -> Vec<(usize, Vec<&Point>)> {
 }
 
 /// Groups of points (same parameters but the mass), in first-seen order.
-pub fn groups<'a>(points: &[&'a Point]) -> Vec<(String, Vec<&'a Point>)> {
+pub fn groups<'a, 'b>(points: &[&'a Point<'b>]) -> Vec<(String, Vec<&'a Point<'b>>)> {
     first_seen(points.iter().copied(), |a, b| a.group == b.group)
         .into_iter()
         .map(|g| (g[0].group.clone(), g))
         .collect()
+}
+
+/// Points at (x, a result's statistics) as error bars (mean ± standard
+/// error; with `floor`, the lower end at least the mean over it, for a log
+/// axis) and markers.
+pub fn marked(at: &[(f64, Stats)], floor: Option<f64>, paint: Paint, label: String) -> [Layer; 2] {
+    let low = |s: &Stats| match floor {
+        Some(f) => (s.mean - s.stderr).max(s.mean / f),
+        None => s.mean - s.stderr,
+    };
+    let bars = at.iter().map(|(x, s)| (*x, low(s), s.mean, s.mean + s.stderr));
+    [
+        Layer::ErrorBars {
+            bars: bars.collect(),
+            paint,
+        },
+        Layer::Markers {
+            points: at.iter().map(|(x, s)| (*x, s.mean)).collect(),
+            paint,
+            label: Some(label),
+        },
+    ]
 }

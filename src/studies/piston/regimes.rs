@@ -7,12 +7,11 @@
 use super::Options;
 use crate::model::chart::{ChartSpec, Layer, Paint, colour};
 use crate::model::report::Figure;
-use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
 use crate::stats::summary::Stats;
-use crate::studies::piston::points::{Point, by_dimension, groups, points};
+use crate::studies::piston::points::{Point, by_dimension, groups, marked, points};
 use crate::studies::piston::relaxation::relaxation;
 use std::f64::consts::{PI, TAU};
 use std::fmt::Write;
@@ -65,7 +64,7 @@ fn verdict_text(s: &Stats) -> String {
 }
 
 /// The regime summary, tables and figures, one part per dimension.
-pub fn regimes(runs: &[(RunSpec, RunOutput)], o: &Options, figures: &mut Vec<Figure>) -> String {
+pub fn regimes(runs: &Runs, o: &Options, figures: &mut Vec<Figure>) -> String {
     let all = points(runs);
     let mut md = String::new();
     for (dimension, points) in by_dimension(&all) {
@@ -114,12 +113,18 @@ fn boundaries(points: &[&Point], across: bool) -> String {
         md.push_str(&boundary(points, result, what, across));
     }
     md.push('\n');
-    md.push_str(PARAMETERS.trim_end());
+    md.push_str(&prose(PARAMETERS, PARAMETERS_ACROSS, across));
+    md.push_str("\n\n");
+    md
+}
+
+/// A text, and where the gas has axes across x, what it adds there.
+fn prose(text: &str, across_text: &str, across: bool) -> String {
+    let mut md = text.trim_end().to_string();
     if across {
         md.push(' ');
-        md.push_str(PARAMETERS_ACROSS.trim_end());
+        md.push_str(across_text.trim_end());
     }
-    md.push_str("\n\n");
     md
 }
 
@@ -130,31 +135,21 @@ fn boundary(points: &[&Point], result: &str, what: &str, across: bool) -> String
     let judged: Vec<(f64, f64, f64, Verdict)> = points
         .iter()
         .map(|p| {
-            let mean = |name: &str| p.stat(name).mean;
-            let v = verdict(&p.stat(result));
-            (
-                mean("mass_over_gas"),
-                mean("speed_ratio"),
-                mean("omega_tau"),
-                v,
-            )
+            let [mu, speed, wt] =
+                ["mass_over_gas", "speed_ratio", "omega_tau"].map(|n| p.stat(n).mean);
+            (mu, speed, wt, verdict(&p.stat(result)))
         })
         .filter(|(mu, ..)| mu.is_finite())
         .collect();
-    // The smallest M/M_gas from which on every point holds, and the
-    // largest up to which every point breaks down.
-    let all_from = |mu: f64, above: bool, v: Verdict| {
-        judged
-            .iter()
-            .filter(|j| if above { j.0 >= mu } else { j.0 <= mu })
-            .all(|j| j.3 == v)
-    };
-    let masses = || judged.iter().map(|j| j.0);
-    let holds_from = masses()
-        .filter(|&mu| all_from(mu, true, Verdict::Holds))
-        .fold(f64::INFINITY, f64::min);
-    let breaks_to = masses()
-        .filter(|&mu| all_from(mu, false, Verdict::Breaks))
+    // The smallest M/M_gas above every point that does not hold, and the
+    // largest below every point that does not break down.
+    let masses =
+        |v: Verdict, is: bool| (judged.iter().filter(move |j| (j.3 == v) == is)).map(|j| j.0);
+    let last_other = masses(Verdict::Holds, false).fold(f64::NEG_INFINITY, f64::max);
+    let holds_from =
+        (masses(Verdict::Holds, true).filter(|&mu| mu > last_other)).fold(f64::INFINITY, f64::min);
+    let first_other = masses(Verdict::Breaks, false).fold(f64::INFINITY, f64::min);
+    let breaks_to = (masses(Verdict::Breaks, true).filter(|&mu| mu < first_other))
         .fold(f64::NEG_INFINITY, f64::max);
     let holding = |f: fn(&(f64, f64, f64, Verdict)) -> f64| {
         judged
@@ -238,40 +233,39 @@ fn resolution(points: &[&Point]) -> String {
 }
 
 /// A column of the per-point table: its header, whether only a gas with
-/// axes across x has it, and its cell.
-type Column = (&'static str, bool, fn(&Point) -> String);
+/// axes across x has it, the result it shows and its cell.
+type Column = (&'static str, bool, &'static str, fn(&Point, &str) -> String);
 
+/// A result's mean ± standard error.
 fn both(p: &Point, name: &str) -> String {
     pm(p.stat(name).mean, p.stat(name).stderr)
 }
 
+fn mean(p: &Point, name: &str) -> String {
+    num(p.stat(name).mean)
+}
+
 const COLUMNS: &[Column] = &[
-    ("point", false, |p| p.id.to_string()),
-    ("parameters", false, |p| p.label()),
-    ("M/M_gas", false, |p| num(p.stat("mass_over_gas").mean)),
-    ("v_piston/v_gas", false, |p| num(p.stat("speed_ratio").mean)),
-    ("ωτ_x", true, |p| num(p.stat("omega_tau").mean)),
-    ("ω/ω_adiabatic (n)", false, |p| {
-        let n = p.stat("frequency_ratio").n;
-        format!("{} ({n}/{})", both(p, "frequency_ratio"), p.runs)
+    ("point", false, "", |p, _| p.id.to_string()),
+    ("parameters", false, "", |p, _| p.label()),
+    ("M/M_gas", false, "mass_over_gas", mean),
+    ("v_piston/v_gas", false, "speed_ratio", mean),
+    ("ωτ_x", true, "omega_tau", mean),
+    (
+        "ω/ω_adiabatic (n)",
+        false,
+        "frequency_ratio",
+        |p, name| format!("{} ({}/{})", both(p, name), p.stat(name).n, p.runs),
+    ),
+    ("ω/ω_ad+inertia", false, "frequency_ratio_inertia", both),
+    ("ω/ω_exchange", true, "frequency_ratio_exchange", both),
+    ("ω/ω_γ=3", true, "frequency_ratio_collisionless", both),
+    ("ω/ω_isothermal", false, "frequency_ratio_isothermal", both),
+    ("adiabatic", false, "frequency_ratio", |p, name| {
+        verdict_text(&p.stat(name))
     }),
-    ("ω/ω_ad+inertia", false, |p| {
-        both(p, "frequency_ratio_inertia")
-    }),
-    ("ω/ω_exchange", true, |p| {
-        both(p, "frequency_ratio_exchange")
-    }),
-    ("ω/ω_γ=3", true, |p| {
-        both(p, "frequency_ratio_collisionless")
-    }),
-    ("ω/ω_isothermal", false, |p| {
-        both(p, "frequency_ratio_isothermal")
-    }),
-    ("adiabatic", false, |p| {
-        verdict_text(&p.stat("frequency_ratio"))
-    }),
-    ("τ relax (n)", false, |p| {
-        let tau = p.stat("relaxation_time");
+    ("τ relax (n)", false, "relaxation_time", |p, name| {
+        let tau = p.stat(name);
         if p.relaxed() {
             format!("{} ({}/{})", pm(tau.mean, tau.stderr), tau.n, p.runs)
         } else {
@@ -283,25 +277,22 @@ const COLUMNS: &[Column] = &[
             )
         }
     }),
-    ("τ exchange", true, |p| {
-        num(p.stat("relaxation_time_exchange").mean)
-    }),
-    ("excess left", false, |p| both(p, "excess_left")),
-    ("piston share / 1/N_free", false, |p| {
-        format!("{} / {}", both(p, "piston_share"), num(p.equipartition))
-    }),
-    ("CPU s", false, |p| format!("{:.2}", p.seconds)),
-    ("collisions", false, |p| count(p.collisions)),
+    ("τ exchange", true, "relaxation_time_exchange", mean),
+    ("excess left", false, "excess_left", both),
+    (
+        "piston share / 1/N_free",
+        false,
+        "piston_share",
+        |p, name| format!("{} / {}", both(p, name), num(p.equipartition)),
+    ),
+    ("CPU s", false, "", |p, _| format!("{:.2}", p.seconds)),
+    ("collisions", false, "", |p, _| count(p.collisions)),
 ];
 
 /// Every point's results, one row each.
 fn table(points: &[&Point], across: bool) -> String {
     let columns: Vec<&Column> = COLUMNS.iter().filter(|c| across || !c.1).collect();
-    let mut md = TABLE.trim_end().to_string();
-    if across {
-        md.push(' ');
-        md.push_str(TABLE_ACROSS.trim_end());
-    }
+    let mut md = prose(TABLE, TABLE_ACROSS, across);
     let headers: Vec<&str> = columns.iter().map(|c| c.0).collect();
     let _ = write!(
         md,
@@ -310,7 +301,7 @@ fn table(points: &[&Point], across: bool) -> String {
         "---|".repeat(columns.len())
     );
     for p in points {
-        let cells: Vec<String> = columns.iter().map(|c| (c.2)(p)).collect();
+        let cells: Vec<String> = columns.iter().map(|c| (c.3)(p, c.2)).collect();
         let _ = writeln!(md, "| {} |", cells.join(" | "));
     }
     md
@@ -319,22 +310,10 @@ fn table(points: &[&Point], across: bool) -> String {
 fn frequency_figure(points: &[&Point], dimension: usize, figures: &mut Vec<Figure>) -> String {
     let mut layers = Vec::new();
     for (i, (group, ps)) in groups(points).into_iter().enumerate() {
-        let at = |p: &Point| (p.stat("mass_over_gas").mean, p.stat("frequency_ratio"));
-        layers.push(Layer::ErrorBars {
-            bars: ps
-                .iter()
-                .map(|p| {
-                    let (mu, s) = at(p);
-                    (mu, s.mean - s.stderr, s.mean, s.mean + s.stderr)
-                })
-                .collect(),
-            paint: colour(i),
-        });
-        layers.push(Layer::Markers {
-            points: ps.iter().map(|p| (at(p).0, at(p).1.mean)).collect(),
-            paint: colour(i),
-            label: Some(group),
-        });
+        let at: Vec<(f64, Stats)> = (ps.iter())
+            .map(|p| (p.stat("mass_over_gas").mean, p.stat("frequency_ratio")))
+            .collect();
+        layers.extend(marked(&at, None, colour(i), group));
     }
     let mus: Vec<f64> = points
         .iter()

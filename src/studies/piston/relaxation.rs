@@ -7,7 +7,8 @@ use crate::model::report::Figure;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
 use crate::stats::line_fit::fit_line;
-use crate::studies::piston::points::{Point, groups};
+use crate::stats::summary::Stats;
+use crate::studies::piston::points::{Point, groups, marked};
 use std::fmt::Write;
 
 const ONE_AXIS: &str = include_str!("text/relaxation_1d.md");
@@ -81,22 +82,8 @@ fn one_group(
         .map(|p| (p.mass.ln(), tau(p).mean.ln(), tau(p).stderr / tau(p).mean))
         .filter(|(_, y, e)| y.is_finite() && *e > 0.0)
         .collect();
-    layers.push(Layer::ErrorBars {
-        bars: relaxed
-            .iter()
-            .map(|p| {
-                let s = tau(p);
-                let low = (s.mean - s.stderr).max(s.mean / 10.0);
-                (p.mass, low, s.mean, s.mean + s.stderr)
-            })
-            .collect(),
-        paint: colour(i),
-    });
-    layers.push(Layer::Markers {
-        points: relaxed.iter().map(|p| (p.mass, tau(p).mean)).collect(),
-        paint: colour(i),
-        label: Some(group.to_string()),
-    });
+    let at: Vec<(f64, Stats)> = relaxed.iter().map(|p| (p.mass, tau(p))).collect();
+    layers.extend(marked(&at, Some(10.0), colour(i), group.to_string()));
     // Unrelaxed points: lower bounds, drawn faded.
     layers.push(Layer::Markers {
         points: ps

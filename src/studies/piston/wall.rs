@@ -50,27 +50,20 @@ const RATIOS: [(&str, &str); 5] = [
 /// costs, one column per case. Empty if the plan has neither.
 pub fn wall_cases(all: &[cases::Run], figures: &mut Vec<Figure>) -> anyhow::Result<String> {
     let mut titles = Vec::new();
-    let mut rows: Vec<(String, String)> = Vec::new();
+    let mut columns = Vec::new();
     let mut pictures = String::new();
     for (name, title) in CASES {
         let runs = cases::runs(all, name);
         if runs.is_empty() {
             continue;
         }
-        let case_rows = table_rows(name, &runs)?;
+        columns.push(table_rows(name, &runs)?);
         pictures.push_str(&case_pictures(name, title, runs[0], figures)?);
-        if rows.is_empty() {
-            rows = case_rows;
-        } else {
-            for (row, (_, value)) in rows.iter_mut().zip(case_rows) {
-                row.1 = format!("{} | {value}", row.1);
-            }
-        }
         titles.push(title);
     }
-    if titles.is_empty() {
+    let Some(first) = columns.first() else {
         return Ok(String::new());
-    }
+    };
     let mut md = INTRO.to_string();
     let _ = write!(
         md,
@@ -78,8 +71,9 @@ pub fn wall_cases(all: &[cases::Run], figures: &mut Vec<Figure>) -> anyhow::Resu
         titles.join(" | "),
         "---|".repeat(titles.len())
     );
-    for (what, values) in &rows {
-        let _ = writeln!(md, "| {what} | {values} |");
+    for (k, (what, _)) in first.iter().enumerate() {
+        let values: Vec<&str> = columns.iter().map(|c| c[k].1.as_str()).collect();
+        let _ = writeln!(md, "| {what} | {} |", values.join(" | "));
     }
     md.push('\n');
     md.push_str(&pictures);
@@ -172,12 +166,8 @@ fn path_figure(
 ) {
     let s = &first.samples;
     let mut layers = vec![Layer::Line {
-        points: s
-            .t
-            .iter()
-            .zip(&s.x)
-            .filter(|(t, _)| **t <= horizon)
-            .map(|(t, x)| (*t, *x))
+        points: (s.t.iter().zip(&s.x))
+            .filter_map(|(t, x)| (*t <= horizon).then_some((*t, *x)))
             .collect(),
         paint: Paint::solid(PURPLE),
         width: 3,
