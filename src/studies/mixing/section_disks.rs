@@ -3,6 +3,7 @@
 //! prediction, the mixing time against density and mass ratio, the
 //! measured self-diffusion coefficient against Enskog's.
 
+use super::section_rods::SENTENCES;
 use super::section::{
     Point, all_mixed, dashed, distinct, figure, measured, mixed, named, tau_text,
 };
@@ -10,6 +11,7 @@ use crate::model::chart::colour;
 use crate::model::report::Figure;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
+use crate::stats::named::named as sentence;
 use crate::stats::summary::z_score;
 use crate::stats::table::table_row;
 use crate::studies::curves::mean_with_band;
@@ -166,21 +168,11 @@ fn bulk_table(bulk_points: &[&Point]) -> String {
             None => {}
         }
     }
-    let mut verdict = Vec::new();
-    if !agree.is_empty() {
-        let at = agree.join(", ");
-        verdict.push(format!("D agrees with Enskog's value (|z| < 4) at {at}"));
-    }
-    if !above.is_empty() {
-        verdict.push(format!(
-            "D exceeds it (z ≥ 4) at {}: correlated motion (the vortices behind the 2D long-time tail) carries the disks further than uncorrelated collisions would",
-            above.join(", ")
-        ));
-    }
-    if !below.is_empty() {
-        let at = below.join(", ");
-        verdict.push(format!("D falls below it (z ≤ −4) at {at}"));
-    }
+    let verdict: Vec<String> = [("agree", agree), ("above", above), ("below", below)]
+        .into_iter()
+        .filter(|(_, at)| !at.is_empty())
+        .map(|(name, at)| fill(sentence(SENTENCES, name), &[("at", at.join(", "))]))
+        .collect();
     let verdict = match verdict.is_empty() {
         true => String::new(),
         false => format!("{}.", verdict.join("; ")),
