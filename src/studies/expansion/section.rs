@@ -16,7 +16,6 @@ use crate::stats::format::{count, num, pm};
 use crate::stats::groups::first_seen;
 use crate::stats::line::line;
 use crate::stats::named::named;
-use crate::stats::summary::Stats;
 use crate::stats::table::table_row;
 use crate::theory::expansion_rods::Collisionless;
 
@@ -36,26 +35,24 @@ const AGREE: f64 = 4.0;
 /// A sweep's gas (N, radius) and its points, one per p_max.
 type GasPoints<'a> = (String, Vec<&'a Group<'a>>);
 
-/// Largest |mean - theory| over the collisionless prediction's own standard
-/// error of a mean over `runs` runs of `n` particles, sqrt(f (1 - f) / (n
-/// runs)) (free particles are independent, each on the left with
-/// probability f), over the samples up to `until`. The error under the
-/// hypothesis tested, not the runs' scatter: with a handful of runs that
-/// scatter is itself uncertain, and its Student tails over hundreds of
-/// samples would reject the theory by chance.
-pub fn largest_z(
-    t: &[f64],
-    mean: &[Stats],
-    theory: &dyn Fn(f64) -> f64,
-    n: f64,
-    until: f64,
-) -> f64 {
-    t.iter()
-        .zip(mean)
+/// Largest |mean - theory| of a group's mean curve against a collisionless
+/// curve, over that curve's own standard error of a mean over the group's
+/// runs of its particles, sqrt(f (1 - f) / (n runs)) (free particles are
+/// independent, each on the left with probability f), over the samples up
+/// to `COMPARED` of its relaxation times. The error under the hypothesis
+/// tested, not the runs' scatter: with a handful of runs that scatter is
+/// itself uncertain, and its Student tails over hundreds of samples would
+/// reject the theory by chance.
+fn free_z(g: &Group, free: Option<Collisionless>) -> f64 {
+    let Some(free) = free else {
+        return f64::NAN;
+    };
+    let until = COMPARED * free.relaxation_time();
+    (g.t.iter().zip(&g.mean))
         .filter(|(t, _)| **t > 0.0 && **t <= until)
         .map(|(t, s)| {
-            let f = theory(*t);
-            let se = (f * (1.0 - f) / (n * s.n as f64)).sqrt();
+            let f = free.left_fraction(*t);
+            let se = (f * (1.0 - f) / (g.particles() * s.n as f64)).sqrt();
             if se > 0.0 {
                 ((s.mean - f) / se).abs()
             } else {
@@ -63,14 +60,6 @@ pub fn largest_z(
             }
         })
         .fold(0.0, f64::max)
-}
-
-/// Max |z| of a group's mean curve against a collisionless curve.
-fn free_z(g: &Group, free: Option<Collisionless>) -> f64 {
-    free.map_or(f64::NAN, |f| {
-        let until = COMPARED * f.relaxation_time();
-        largest_z(&g.t, &g.mean, &|t| f.left_fraction(t), g.particles(), until)
-    })
 }
 
 /// Power of p_max in the relaxation time of one gas: the weighted slope of

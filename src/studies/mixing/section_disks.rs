@@ -3,9 +3,9 @@
 //! prediction, the mixing time against density and mass ratio, the
 //! measured self-diffusion coefficient against Enskog's.
 
-use super::section_rods::SENTENCES;
+use super::section_rods::{SENTENCES, label_of};
 use super::section::{
-    Point, all_mixed, dashed, distinct, figure, measured, mixed, named, tau_text,
+    Point, all_mixed, dashed, distinct, figure, measured, mixed, tau_text,
 };
 use crate::model::chart::colour;
 use crate::model::report::Figure;
@@ -21,15 +21,8 @@ const TEXT: &str = include_str!("disks.md");
 pub(super) const BULK: &str = include_str!("bulk.md");
 
 fn label(p: &Point) -> String {
-    named(
-        p,
-        format!(
-            "N = {}, η = {}, m_B/m_A = {}",
-            num(p.first("particles")),
-            num(p.first("packing_fraction")),
-            num(p.first("mass_ratio"))
-        ),
-    )
+    let values = [("N", "particles"), ("η", "packing_fraction"), ("m_B/m_A", "mass_ratio")];
+    label_of(p, &values)
 }
 
 /// The periodic-box point at the same packing fraction and mass ratio as

@@ -30,16 +30,14 @@ pub const SMALL_SPREAD: f64 = 0.5;
 /// over.
 const MANY: f64 = 10.0;
 
+/// A point's name: its values of the results named, each after its symbol.
+pub(super) fn label_of(p: &Point, values: &[(&str, &str)]) -> String {
+    let values = values.iter().map(|(symbol, r)| format!("{symbol} = {}", num(p.first(r))));
+    named(p, values.collect::<Vec<_>>().join(", "))
+}
+
 fn label(p: &Point) -> String {
-    named(
-        p,
-        format!(
-            "N = {}, ε = {}, M/m̄ = {}",
-            num(p.first("particles")),
-            num(p.first("mass_spread")),
-            num(p.first("hot_mass_ratio"))
-        ),
-    )
+    label_of(p, &[("N", "particles"), ("ε", "mass_spread"), ("M/m̄", "hot_mass_ratio")])
 }
 
 /// A fit of ln tau (collision clock) against ln x over the fully mixed
