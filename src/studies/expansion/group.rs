@@ -1,23 +1,18 @@
 //! The runs of one sweep point or case, with what the report needs of them:
-//! the scene as the theory sees it, how its velocities were drawn, per-run
-//! results as ensemble statistics and the ensemble-mean left fraction.
+//! the scene as the theory sees it, how its velocities were drawn and the
+//! ensemble-mean left fraction.
 
 use super::measure::{Draw, Gas, draw};
-use crate::model::run_output::RunOutput;
 use crate::stats::ensemble::Runs;
 use crate::stats::format::num;
 use crate::stats::passage::first_passage;
+use crate::stats::point_runs::{PointRuns, by_point};
 use crate::stats::summary::Stats;
 use crate::theory::expansion_rods::Collisionless;
-use std::collections::BTreeMap;
+use std::ops::Deref;
 
 pub struct Group<'a> {
-    /// The case's name; None for a sweep point.
-    pub case: Option<String>,
-    pub point: u64,
-    /// Every run of the plan, for this point's series means.
-    pub all: &'a Runs,
-    pub outs: Vec<&'a RunOutput>,
+    pub runs: PointRuns<'a>,
     pub gas: Option<Gas>,
     pub draw: Option<Draw>,
     /// Sample times and the ensemble's left fraction at each.
@@ -25,24 +20,27 @@ pub struct Group<'a> {
     pub mean: Vec<Stats>,
 }
 
+/// The points' runs, as their statistics and series.
+impl<'a> Deref for Group<'a> {
+    type Target = PointRuns<'a>;
+    fn deref(&self) -> &PointRuns<'a> {
+        &self.runs
+    }
+}
+
 /// Runs grouped by sweep point (in order), then by case (in name order).
 pub fn groups(runs: &Runs) -> Vec<Group<'_>> {
-    let mut by: BTreeMap<(Option<String>, u64), Vec<_>> = BTreeMap::new();
-    for (spec, out) in runs.iter() {
-        let key = (spec.case.clone(), spec.point_id);
-        by.entry(key).or_default().push((spec, out));
-    }
-    by.into_iter()
-        .map(|((case, point), rs)| {
-            let d = &rs[0].0.descriptor;
-            let (t, mean) = runs.mean(point, "left_fraction").unwrap_or_default();
+    let mut points = by_point(runs);
+    points.sort_by_key(|p| p.spec.case.clone());
+    (points.into_iter())
+        .map(|runs| {
+            let d = &runs.spec.descriptor;
+            let (t, mean) = runs.mean_curve("left_fraction");
+            let (gas, draw) = (Gas::of_descriptor(d), draw(d));
             Group {
-                case,
-                point,
-                all: runs,
-                gas: Gas::of_descriptor(d),
-                draw: draw(d),
-                outs: rs.iter().map(|r| r.1).collect(),
+                runs,
+                gas,
+                draw,
                 t,
                 mean,
             }
@@ -51,11 +49,6 @@ pub fn groups(runs: &Runs) -> Vec<Group<'_>> {
 }
 
 impl Group<'_> {
-    /// A per-run result over the runs that report it finite.
-    pub fn stat(&self, name: &str) -> Stats {
-        crate::stats::summary::scalar(self.outs.iter().copied(), name)
-    }
-
     pub fn free(&self) -> Option<Collisionless> {
         Some(self.gas.as_ref()?.free(self.draw?))
     }
@@ -114,7 +107,7 @@ impl Group<'_> {
     /// "case: 100 disks, radius 0.5, p_max = 1".
     pub fn label(&self) -> String {
         let what = ["disks", "rods", "disks", "spheres"][self.dimension().min(3)];
-        let case = (self.case.as_ref()).map_or(String::new(), |c| format!("{c}: "));
+        let case = (self.spec.case.as_ref()).map_or(String::new(), |c| format!("{c}: "));
         let (n, r) = (self.particles(), num(self.radius()));
         format!("{case}{n} {what}, radius {r}, {}", self.start_text())
     }

@@ -2,12 +2,14 @@
 //! it settled and how much it fluctuates there; and the collisionless
 //! prediction for the scene it started from.
 
+use crate::engine::boundary::ball_volume;
 use crate::model::descriptor::Descriptor;
 use crate::model::scene::{Drawn, Velocities};
 use crate::scene::Built;
 use crate::stats::late::late_mean;
 use crate::theory::expansion::{Diffusive, FreeExpansion, Mixture, Speeds, compressibility};
 use crate::theory::expansion_rods::{Collisionless, Rods};
+use crate::theory::heat::mean_free_path;
 use crate::theory::self_diffusion;
 
 /// Mean of f over the last `LATE` of the run (see `stats::late`), and its
@@ -78,12 +80,7 @@ impl Gas {
         }
         let n: usize = kinds.iter().map(|k| k.2).sum();
         let diameter = kinds.iter().map(|k| 2.0 * k.0 * k.2 as f64).sum::<f64>() / n as f64;
-        let ball = |r: f64| match dimension {
-            1 => 2.0 * r,
-            2 => std::f64::consts::PI * r * r,
-            _ => 4.0 / 3.0 * std::f64::consts::PI * r.powi(3),
-        };
-        let filled: f64 = kinds.iter().map(|k| ball(k.0) * k.2 as f64).sum();
+        let filled: f64 = (kinds.iter()).map(|k| ball_volume(dimension, k.0) * k.2 as f64).sum();
         let volume: f64 = size.iter().product();
         Gas {
             dimension,
@@ -101,13 +98,7 @@ impl Gas {
     /// 1/(sqrt2 pi n d^2) for spheres; infinite for points. Rods have none
     /// (they never pass each other): NaN.
     pub fn knudsen(&self) -> f64 {
-        let (n, d) = (self.density, self.diameter);
-        let path = match self.dimension {
-            2 => 1.0 / (2.0 * 2f64.sqrt() * n * d),
-            3 => 1.0 / (2f64.sqrt() * std::f64::consts::PI * n * d * d),
-            _ => f64::NAN,
-        };
-        path / self.length
+        mean_free_path(self.dimension, self.density, self.diameter) / self.length
     }
 
     pub fn volume(&self) -> f64 {

@@ -90,6 +90,7 @@ impl Study for Expansion {
         let start = drawn.filter(|_| left);
         let free = start.map_or(f64::NAN, |d| gas.free(d).relaxation_time());
         let enskog = drawn.map_or(f64::NAN, |d| gas.diffusion_enskog(d));
+        let diffusive = left.then(|| gas.diffusive(enskog).relaxation_time());
         let n = gas.particles as f64;
         // A run that records the mean-squared displacement (a case with a
         // periodic y axis, the gas filling the box) measures D along y.
@@ -104,14 +105,7 @@ impl Study for Expansion {
                 ("relaxation_time_free", free),
                 ("relaxation_ratio", tau / free),
                 ("diffusion_enskog", enskog),
-                (
-                    "relaxation_time_diffusive",
-                    if left {
-                        gas.diffusive(enskog).relaxation_time()
-                    } else {
-                        f64::NAN
-                    },
-                ),
+                ("relaxation_time_diffusive", diffusive.unwrap_or(f64::NAN)),
                 ("late_mean", mean),
                 // Independent particles: binomial, variance 1/(4N).
                 ("late_variance_ratio", variance * 4.0 * n),

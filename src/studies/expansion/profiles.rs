@@ -10,9 +10,12 @@ use super::group::Group;
 use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::report::Figure;
 use crate::model::run_output::{RunOutput, Series};
+use crate::stats::fill::fill;
 use crate::stats::format::num;
+use crate::stats::table::table_row;
 use crate::theory::adiabat::temperature_ratio;
-use std::fmt::Write;
+
+const TEXT: &str = include_str!("profiles.md");
 
 /// Per slab and sample, the weight (its count less one, 0 where its kT is
 /// undefined) and the weighted kT, whose means over the runs pool the
@@ -76,7 +79,7 @@ pub fn section(g: &Group, name: &str) -> Option<(Vec<Figure>, String)> {
     let gas = g.gas.as_ref()?;
     let kt0 = gas.temperature(g.draw?);
     let tau = g.tau_free();
-    let mean = |name: String| g.all.mean(g.point, &name);
+    let mean = |name: String| Some(g.mean_curve(&name)).filter(|(t, _)| !t.is_empty());
     let (times, _) = mean("count_x.0".into())?;
     let slabs = (0..)
         .take_while(|b| mean(format!("count_x.{b}")).is_some())
@@ -148,35 +151,28 @@ pub fn section(g: &Group, name: &str) -> Option<(Vec<Figure>, String)> {
         format!("expansion_density_{name}.svg"),
         format!("expansion_temperature_{name}.svg"),
     );
-    let mut md = String::new();
-    let _ = writeln!(
-        md,
-        "![{0}: ensemble-mean density in 16 slabs along x at t = {1} τ free.]({fd})\n\n\
-         ![{0}: ensemble-mean kT about each slab's flow, pooled over {2} runs, with the hard-particle fluid's adiabat at each slab's density (dashed).]({ft})\n",
-        g.label(),
-        TIMES.map(num).join(", "),
-        g.outs.len()
-    );
-    md.push_str(
-        "| t | t / τ free | left of the middle: n/n̄ | kT/kT₀ | adiabat | ideal adiabat | right of the middle: n/n̄ | kT/kT₀ | adiabat | ideal adiabat | kinetic energy about the slabs' flow / total |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|\n",
-    );
     let (l, r) = (slabs / 2 - 1, slabs / 2);
+    let mut rows = String::new();
     for p in &profiles {
-        let _ = write!(md, "| {} | {} |", num(p.t), num(p.t / tau));
+        let mut cells = vec![num(p.t), num(p.t / tau)];
         for b in [l, r] {
-            let _ = write!(
-                md,
-                " {} | {} | {} | {} |",
-                num(p.density[b]),
-                num(p.temperature[b]),
-                num(p.adiabat[b]),
-                num(p.ideal[b])
-            );
+            cells.extend([p.density[b], p.temperature[b], p.adiabat[b], p.ideal[b]].map(num));
         }
-        let _ = writeln!(md, " {} |", num(p.thermal_share));
+        cells.push(num(p.thermal_share));
+        rows.push_str(&table_row(&cells));
     }
-    md.push('\n');
+    let md = fill(
+        TEXT,
+        &[
+            ("name", name.into()),
+            ("label", g.label()),
+            ("times", TIMES.map(num).join(", ")),
+            ("runs", g.outs.len().to_string()),
+            ("density_file", fd.clone()),
+            ("temperature_file", ft.clone()),
+            ("rows", rows),
+        ],
+    );
     let figure = |file: String, chart| Figure { file, chart };
     Some((vec![figure(fd, density), figure(ft, temperature)], md))
 }

@@ -13,13 +13,17 @@ use crate::model::report::{Figure, ReportSection};
 use crate::stats::ensemble::Runs;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
+use crate::stats::groups::first_seen;
 use crate::stats::line::line;
-use crate::stats::summary::Stats;
+use crate::stats::named::named;
+use crate::stats::table::table_row;
 use crate::theory::expansion_rods::Collisionless;
-use std::fmt::Write;
 
 const INTRO: &str = include_str!("intro.md");
 const METHODS: &str = include_str!("methods.md");
+const CAPTIONS: &str = include_str!("captions.md");
+const EXPONENTS: &str = include_str!("exponents.md");
+const POINTS: &str = include_str!("points.md");
 
 /// Beyond this many collisionless relaxation times the curves are compared
 /// no further: both are within noise of 1/2 there.
@@ -31,26 +35,24 @@ const AGREE: f64 = 4.0;
 /// A sweep's gas (N, radius) and its points, one per p_max.
 type GasPoints<'a> = (String, Vec<&'a Group<'a>>);
 
-/// Largest |mean - theory| over the collisionless prediction's own standard
-/// error of a mean over `runs` runs of `n` particles, sqrt(f (1 - f) / (n
-/// runs)) (free particles are independent, each on the left with
-/// probability f), over the samples up to `until`. The error under the
-/// hypothesis tested, not the runs' scatter: with a handful of runs that
-/// scatter is itself uncertain, and its Student tails over hundreds of
-/// samples would reject the theory by chance.
-pub fn largest_z(
-    t: &[f64],
-    mean: &[Stats],
-    theory: &dyn Fn(f64) -> f64,
-    n: f64,
-    until: f64,
-) -> f64 {
-    t.iter()
-        .zip(mean)
+/// Largest |mean - theory| of a group's mean curve against a collisionless
+/// curve, over that curve's own standard error of a mean over the group's
+/// runs of its particles, sqrt(f (1 - f) / (n runs)) (free particles are
+/// independent, each on the left with probability f), over the samples up
+/// to `COMPARED` of its relaxation times. The error under the hypothesis
+/// tested, not the runs' scatter: with a handful of runs that scatter is
+/// itself uncertain, and its Student tails over hundreds of samples would
+/// reject the theory by chance.
+fn free_z(g: &Group, free: Option<Collisionless>) -> f64 {
+    let Some(free) = free else {
+        return f64::NAN;
+    };
+    let until = COMPARED * free.relaxation_time();
+    (g.t.iter().zip(&g.mean))
         .filter(|(t, _)| **t > 0.0 && **t <= until)
         .map(|(t, s)| {
-            let f = theory(*t);
-            let se = (f * (1.0 - f) / (n * s.n as f64)).sqrt();
+            let f = free.left_fraction(*t);
+            let se = (f * (1.0 - f) / (g.particles() * s.n as f64)).sqrt();
             if se > 0.0 {
                 ((s.mean - f) / se).abs()
             } else {
@@ -58,14 +60,6 @@ pub fn largest_z(
             }
         })
         .fold(0.0, f64::max)
-}
-
-/// Max |z| of a group's mean curve against a collisionless curve.
-fn free_z(g: &Group, free: Option<Collisionless>) -> f64 {
-    free.map_or(f64::NAN, |f| {
-        let until = COMPARED * f.relaxation_time();
-        largest_z(&g.t, &g.mean, &|t| f.left_fraction(t), g.particles(), until)
-    })
 }
 
 /// Power of p_max in the relaxation time of one gas: the weighted slope of
@@ -117,21 +111,19 @@ impl Verdicts {
 
 pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
     let all = groups(runs);
-    let sweep: Vec<&Group> = all.iter().filter(|g| g.case.is_none()).collect();
-    let is = |g: &Group, prefix: &str| g.case.as_deref().is_some_and(|c| c.starts_with(prefix));
+    let sweep: Vec<&Group> = all.iter().filter(|g| g.spec.case.is_none()).collect();
+    let case = |g: &Group| g.spec.case.clone().unwrap_or_default();
+    let profiled = |g: &Group| case(g).starts_with("profiles");
     let measures_d = |g: &Group| g.stat("diffusion_measured").n > 0;
     let expansion_cases: Vec<&Group> = (all.iter())
-        .filter(|g| g.case.is_some() && !is(g, "profiles") && !measures_d(g))
+        .filter(|g| g.spec.case.is_some() && !profiled(g) && !measures_d(g))
         .collect();
     // The sweep's gases (N, radius), each at its values of p_max.
-    let mut gases: Vec<GasPoints> = Vec::new();
-    for g in &sweep {
-        let label = format!("N = {}, radius {}", g.particles(), num(g.radius()));
-        match gases.iter_mut().find(|(l, _)| *l == label) {
-            Some((_, gs)) => gs.push(g),
-            None => gases.push((label, vec![g])),
-        }
-    }
+    let gas = |g: &Group| format!("N = {}, radius {}", g.particles(), num(g.radius()));
+    let gases: Vec<GasPoints> = first_seen(sweep.iter().copied(), |a, b| gas(a) == gas(b))
+        .into_iter()
+        .map(|gs| (gas(gs[0]), gs))
+        .collect();
     let mut figures = Vec::new();
     let mut md = String::from(INTRO);
     let diffusion = all.iter().find(|g| measures_d(g));
@@ -147,20 +139,12 @@ pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
             let file = file.into();
             figures.push(Figure { file, chart });
         }
-        md.push_str(
-            "![Relaxation time against p_max, one colour per gas, with the collisionless time \
-             (dashed).](expansion_tau_p_max.svg)\n\n\
-             ![τ p_max / (m L) against the Knudsen number: the collisionless prediction (dashed) \
-             is a constant, the diffusive one grows as 1/Kn.](expansion_tau_knudsen.svg)\n\n",
-        );
         md.push_str(&exponent_table(&gases));
     }
     left_fractions(&mut md, &mut figures, &gases, &expansion_cases);
     md.push_str(&points_table(sweep.iter().chain(&expansion_cases)));
-    for g in all.iter().filter(|g| is(g, "profiles")) {
-        let name = g.case.clone().unwrap_or_default();
-        if let Some((fs, text)) = profiles::section(g, &name) {
-            let _ = writeln!(md, "**Profiles during the expansion**, case `{name}`:\n");
+    for g in all.iter().filter(|g| profiled(g)) {
+        if let Some((fs, text)) = profiles::section(g, &case(g)) {
             md.push_str(&text);
             figures.extend(fs);
         }
@@ -179,6 +163,11 @@ fn methods() -> String {
     fill(METHODS, &values)
 }
 
+/// The caption or sentence named `name`, filled, as a paragraph.
+fn caption(name: &str, values: &[(&str, String)]) -> String {
+    fill(named(CAPTIONS, name), values) + "\n\n"
+}
+
 /// τ over the box crossing time L m / p_max of a gas's first point.
 fn crossing_scale(g: &Group) -> f64 {
     (g.gas.as_ref()).map_or(f64::NAN, |gas| g.p_max() / (gas.kinds[0].1 * gas.length))
@@ -191,58 +180,55 @@ fn diffusion_text(md: &mut String, g: &Group) -> Option<(f64, f64)> {
     let enskog = g.stat("diffusion_enskog").mean;
     let gas = g.gas.as_ref();
     let tau = |d: f64| gas.map_or(f64::NAN, |gas| gas.diffusive(d).relaxation_time());
-    let _ = writeln!(
-        md,
-        "**Diffusion coefficient** (case `{}`: {}, filling the box, y periodic): measured from the \
-         mean-squared displacement along y, D = {} σ² per unit time over {} runs; Enskog's \
-         (kinetic theory at the final density and kT = p_max²/3m) {}, ratio {}. The diffusive \
-         relaxation time with the measured D is {} (Enskog's: {}); the measured one, at the same \
-         gas in the left half (the sweep, same N, radius and p_max), is in the table.\n",
-        g.case.as_deref().unwrap_or(""),
-        g.label(),
-        pm(measured.mean, measured.stderr),
-        measured.n,
-        num(enskog),
-        num(measured.mean / enskog),
-        num(tau(measured.mean)),
-        num(tau(enskog)),
-    );
+    md.push_str(&caption(
+        "diffusion",
+        &[
+            ("case", g.spec.case.clone().unwrap_or_default()),
+            ("label", g.label()),
+            ("measured", pm(measured.mean, measured.stderr)),
+            ("runs", measured.n.to_string()),
+            ("enskog", num(enskog)),
+            ("ratio", num(measured.mean / enskog)),
+            ("tau", num(tau(measured.mean))),
+            ("tau_enskog", num(tau(enskog))),
+        ],
+    ));
     Some((gas?.knudsen(), tau(measured.mean) * crossing_scale(g)))
 }
 
 /// Per gas the power of p_max in τ, and whether τ ∝ 1/p_max.
 fn exponent_table(gases: &[GasPoints]) -> String {
-    let mut md = String::from(
-        "| gas | Kn = λ/L | points | τ ∝ p_max^a: a | z (a = −1) | τ p_max / (m L), measured at the smallest p_max | collisionless |\n\
-         |---|---|---|---|---|---|---|\n",
-    );
+    let mut rows = String::new();
     let mut inverse = Verdicts::default();
     for (label, gs) in gases {
         let (a, se) = exponent(gs);
         let (g, scale) = (gs[0], crossing_scale(gs[0]));
-        let _ = writeln!(
-            md,
-            "| {label} | {} | {} | {} | {} | {} | {} |",
+        rows.push_str(&table_row(&[
+            label.clone(),
             num(g.stat("knudsen").mean),
-            gs.len(),
+            gs.len().to_string(),
             pm(a, se),
             num(z(a, -1.0, se)),
             num(g.stat("relaxation_time").mean * scale),
-            num(g.tau_free() * scale)
-        );
+            num(g.tau_free() * scale),
+        ]));
         inverse.add(format!("{label} (a = {})", pm(a, se)), z(a, -1.0, se));
     }
-    if inverse.differ.is_empty() && !inverse.agree.is_empty() {
-        md.push_str("\n**Yes, τ changes with p_max: τ ∝ 1/p_max for every gas swept.**");
-    }
-    let _ = writeln!(
-        md,
-        " The power a is −1 within {} standard errors for: {}. It is not for: {}.\n",
-        num(AGREE),
-        list(&inverse.agree),
-        list(&inverse.differ)
-    );
-    md
+    let all_inverse = inverse.differ.is_empty() && !inverse.agree.is_empty();
+    let inverse_text = match all_inverse {
+        true => format!("\n{}", named(CAPTIONS, "inverse")),
+        false => String::new(),
+    };
+    fill(
+        EXPONENTS,
+        &[
+            ("rows", rows),
+            ("inverse", inverse_text),
+            ("agree", num(AGREE)),
+            ("agreeing", list(&inverse.agree)),
+            ("differing", list(&inverse.differ)),
+        ],
+    )
 }
 
 /// The left fraction of each gas (on the scaled time axis when it was
@@ -260,28 +246,17 @@ fn left_fractions<'a>(
             continue;
         }
         let file = format!("expansion_left_fraction_{i}.svg");
-        let _ = writeln!(
-            md,
-            "![{label}: ensemble mean of the left fraction at each p_max (band: ±1 standard error) \
-             against t p_max / m, with the collisionless and diffusive predictions (dashed).]({file})\n"
-        );
+        let values = [("label", label.clone()), ("file", file.clone())];
+        md.push_str(&caption("scaled", &values));
         let chart = scaled(gs, label);
         figures.push(Figure { file, chart });
     }
-    singles.extend(
-        cases
-            .iter()
-            .map(|g| (g.case.clone().unwrap_or_default(), *g)),
-    );
+    singles.extend(cases.iter().map(|g| (g.spec.case.clone().unwrap_or_default(), *g)));
     for (name, g) in &singles {
         let file = format!("expansion_left_fraction_{name}.svg");
-        let _ = writeln!(
-            md,
-            "![{}: ensemble mean of the left fraction (band: ±1 standard error over {} runs) and \
-             the collisionless prediction (dashed).]({file})\n",
-            g.label(),
-            g.outs.len()
-        );
+        let runs = g.outs.len().to_string();
+        let values = [("label", g.label()), ("runs", runs), ("file", file.clone())];
+        md.push_str(&caption("single", &values));
         figures.push(Figure {
             file,
             chart: single(g),
@@ -291,12 +266,7 @@ fn left_fractions<'a>(
 
 /// Every point and case, and which of them each prediction describes.
 fn points_table<'a>(groups: impl Iterator<Item = &'a &'a Group<'a>>) -> String {
-    let mut md = String::from(
-        "| gas | d | Kn = λ/L | runs | τ (runs reaching it) | τ of the mean curve | τ free | τ / τ free | \
-         max \\|z\\| vs free, t ≤ 3 τ free | same vs free Maxwellian at the same kT | τ diffusive (Enskog D) | late mean (z vs ½) | \
-         late variance × 4N (z vs S(0)) | S(0) | CPU s | collisions |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
-    );
+    let mut rows = String::new();
     let (mut free, mut diffusive) = (Verdicts::default(), Verdicts::default());
     for g in groups {
         let tau = g.stat("relaxation_time");
@@ -310,53 +280,54 @@ fn points_table<'a>(groups: impl Iterator<Item = &'a &'a Group<'a>>) -> String {
         let late = g.stat("late_mean");
         let var = g.stat("late_variance_ratio");
         let s0 = g.stat("compressibility").mean;
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {} | {} ({}/{}) | {} | {} | {} | {} | {} | {} | {} ({}) | {} ({}) | {} | {} | {} |",
+        let runs = g.outs.len();
+        rows.push_str(&table_row(&[
             g.label(),
-            g.dimension(),
+            g.dimension().to_string(),
             num(kn),
-            g.outs.len(),
-            pm(tau.mean, tau.stderr),
-            tau.n,
-            g.outs.len(),
+            runs.to_string(),
+            format!("{} ({}/{runs})", pm(tau.mean, tau.stderr), tau.n),
             num(g.tau_of_mean()),
             num(tau_free),
             num(tau.mean / tau_free),
             num(zf),
             num(free_z(g, g.free_thermal())),
             num(tau_diffusive),
-            pm(late.mean, late.stderr),
-            num(z(late.mean, 0.5, late.stderr)),
-            pm(var.mean, var.stderr),
-            num(z(var.mean, s0, var.stderr)),
+            format!("{} ({})", pm(late.mean, late.stderr), num(z(late.mean, 0.5, late.stderr))),
+            format!("{} ({})", pm(var.mean, var.stderr), num(z(var.mean, s0, var.stderr))),
             num(s0),
-            num(g.outs.iter().map(|o| o.cpu_seconds).sum()),
-            count(g.outs.iter().map(|o| o.collisions).sum()),
-        );
+            num(g.cpu()),
+            count(g.collisions()),
+        ]));
     }
-    let _ = writeln!(
-        md,
-        "\nThe collisionless curve holds within {0} of its standard errors at every sample up to {1} τ free at: {2}. \
-         It does not at: {3}. The diffusive relaxation time (Enskog D) is within {0} standard errors of the measured τ at: {4}. \
-         It is not at: {5}.\n",
-        num(AGREE),
-        num(COMPARED),
-        list(&free.agree),
-        list(&free.differ),
-        list(&diffusive.agree),
-        list(&diffusive.differ)
-    );
-    md
+    fill(
+        POINTS,
+        &[
+            ("rows", rows),
+            ("agree", num(AGREE)),
+            ("compared", num(COMPARED)),
+            ("free_agree", list(&free.agree)),
+            ("free_differ", list(&free.differ)),
+            ("diffusive_agree", list(&diffusive.agree)),
+            ("diffusive_differ", list(&diffusive.differ)),
+        ],
+    )
 }
 
 #[cfg(test)]
 mod tests {
     use crate::stats::fill::unfilled;
+    use crate::stats::named::names;
 
+    /// Every text is filled, with no points too; the captions are the ones
+    /// the code names.
     #[test]
     fn every_placeholder_is_filled() {
         assert!(unfilled(&super::methods()).is_empty());
         assert!(unfilled(super::INTRO).is_empty());
+        assert!(unfilled(&super::exponent_table(&[])).is_empty());
+        assert!(unfilled(&super::points_table(std::iter::empty())).is_empty());
+        let captions: Vec<&str> = names(super::CAPTIONS).collect();
+        assert_eq!(captions, ["diffusion", "inverse", "scaled", "single"]);
     }
 }

@@ -79,7 +79,6 @@ pub fn part(points: &[(Gas, (f64, f64, bool), Runs)], figures: &mut Vec<Figure>)
         let bulk = rs.stat("conductivity");
         logs.extend(log_point(gas.particles, &eff));
         bulk_logs.extend(log_point(gas.particles, &bulk));
-        let (cpu, collisions) = (rs.cpu(), rs.collisions());
         let flux = rs.stat("flux_in");
         rows.push_str(&table_row(&[
             num(gas.particles),
@@ -90,8 +89,8 @@ pub fn part(points: &[(Gas, (f64, f64, bool), Runs)], figures: &mut Vec<Figure>)
             with_z(&rs.stat("flux_imbalance"), 0.0),
             pm(eff.mean, eff.stderr),
             pm(bulk.mean, bulk.stderr),
-            num(cpu),
-            count(collisions),
+            num(rs.cpu()),
+            count(rs.collisions()),
         ]));
     }
     let (alpha, se, chi2) = power_fit(&logs);

@@ -3,12 +3,12 @@
 //! which experiment it is: a gas relaxing to walls at one temperature, or
 //! conducting heat from a hot to a cold wall across x.
 
+use crate::engine::boundary::ball_volume;
 use crate::model::descriptor::Descriptor;
 use crate::model::scene::{Boundary, Placement, RodOrder, Side};
 use crate::scene::velocities::maxwell_temperature;
 use crate::theory::heat::{compressibility, exchange_rate, mean_free_path};
 use crate::theory::heat_free::FreeRelaxation;
-use std::f64::consts::PI;
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Gas {
@@ -114,12 +114,7 @@ impl Gas {
 
     /// Volume of one particle (length, area, volume of a ball).
     pub fn particle_volume(&self) -> f64 {
-        let r = self.diameter / 2.0;
-        match self.dimension {
-            1 => 2.0 * r,
-            2 => PI * r * r,
-            _ => 4.0 / 3.0 * PI * r.powi(3),
-        }
+        ball_volume(self.dimension, self.diameter / 2.0)
     }
 
     pub fn packing(&self) -> f64 {

@@ -77,7 +77,6 @@ pub fn part(
         if ratio_0.mean.is_finite() {
             bars.push(bar(phi.mean, &ratio_0));
         }
-        let (cpu, collisions) = (rs.cpu(), rs.collisions());
         let s = |name: &str| {
             let s = rs.stat(name);
             pm(s.mean, s.stderr)
@@ -98,7 +97,7 @@ pub fn part(
             num(rs.stat("conductivity_enskog").mean),
             with_z(&rs.stat("conductivity_ratio_enskog"), 1.0),
             pm(ratio_0.mean, ratio_0.stderr),
-            num(cpu),
+            num(rs.cpu()),
         ]));
         let (jh, jc) = (rs.stat("jump_hot"), rs.stat("jump_cold"));
         match above_zero(&jh) && above_zero(&jc) {
@@ -114,7 +113,7 @@ pub fn part(
             num(jh.mean / g.mean.abs()),
             num(jc.mean / g.mean.abs()),
             num(gas.knudsen_at(centre_n) * length),
-            count(collisions),
+            count(rs.collisions()),
         ]));
         let (figure, text) = profile_figure(k, &points[k], width, &pooled, &t_mean, &line);
         figures.push(figure);

@@ -41,7 +41,6 @@ pub fn part(window: f64, points: &[(Gas, f64, Runs)], figures: &mut Vec<Figure>)
         if ratio.mean.is_finite() && kn.is_finite() {
             ratio_bars.push(bar(kn, &ratio));
         }
-        let (cpu, collisions) = (rs.cpu(), rs.collisions());
         rows.push_str(&table_row(&[
             name.clone(),
             num(kn),
@@ -56,8 +55,8 @@ pub fn part(window: f64, points: &[(Gas, f64, Runs)], figures: &mut Vec<Figure>)
             pm(ratio_free.mean, ratio_free.stderr),
             with_z(&rs.stat("initial_rate_ratio"), 1.0),
             with_z(&rs.stat("late_temperature"), *wall),
-            num(cpu),
-            count(collisions),
+            num(rs.cpu()),
+            count(rs.collisions()),
         ]));
         let shown = t
             .iter()

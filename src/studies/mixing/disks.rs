@@ -7,6 +7,7 @@
 //! along y with wavelengths of the box length carry the disks collectively
 //! and inflate the displacement along y several-fold in a dense strip.)
 
+use crate::engine::boundary::ball_volume;
 use crate::model::descriptor::Descriptor;
 use crate::model::run_output::RunOutput;
 use crate::scene::Built;
@@ -14,6 +15,7 @@ use crate::scene::velocities::maxwell_temperature;
 use crate::stats::diffusion::diffusion;
 use crate::stats::late::late_mean;
 use crate::stats::passage::first_passage;
+use crate::theory::heat::mean_free_path;
 use crate::theory::mixing::disk_diffusion_enskog;
 
 /// kT of a Maxwellian start (the default when the scene gives none); None
@@ -48,10 +50,7 @@ pub fn per_run(
     }
     let sizes = built.sim_box.size;
     let area = sizes[0] * sizes[1];
-    let filled: f64 = balls
-        .iter()
-        .map(|p| std::f64::consts::PI * p.radius * p.radius)
-        .sum();
+    let filled: f64 = balls.iter().map(|p| ball_volume(2, p.radius)).sum();
     let eta = filled / area;
     let density = n as f64 / area;
     let sigma = balls.iter().map(|p| 2.0 * p.radius).sum::<f64>() / n as f64;
@@ -62,10 +61,7 @@ pub fn per_run(
             ("packing_fraction", eta),
             ("mass_ratio", mb / ma),
             // Mean free path of the dilute gas over the box length along x.
-            (
-                "knudsen",
-                1.0 / (2.0 * 2f64.sqrt() * density * sigma) / sizes[0],
-            ),
+            ("knudsen", mean_free_path(2, density, sigma) / sizes[0]),
         ]
         .map(|(k, v)| (k.to_string(), v)),
     );

@@ -3,13 +3,15 @@
 //! prediction, the mixing time against density and mass ratio, the
 //! measured self-diffusion coefficient against Enskog's.
 
+use super::section_rods::{SENTENCES, label_of};
 use super::section::{
-    Point, all_mixed, dashed, distinct, figure, measured, mixed, named, tau_text,
+    Point, all_mixed, dashed, distinct, figure, measured, mixed, tau_text,
 };
 use crate::model::chart::colour;
 use crate::model::report::Figure;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
+use crate::stats::named::named as sentence;
 use crate::stats::summary::z_score;
 use crate::stats::table::table_row;
 use crate::studies::curves::mean_with_band;
@@ -19,15 +21,8 @@ const TEXT: &str = include_str!("disks.md");
 pub(super) const BULK: &str = include_str!("bulk.md");
 
 fn label(p: &Point) -> String {
-    named(
-        p,
-        format!(
-            "N = {}, η = {}, m_B/m_A = {}",
-            num(p.first("particles")),
-            num(p.first("packing_fraction")),
-            num(p.first("mass_ratio"))
-        ),
-    )
+    let values = [("N", "particles"), ("η", "packing_fraction"), ("m_B/m_A", "mass_ratio")];
+    label_of(p, &values)
 }
 
 /// The periodic-box point at the same packing fraction and mass ratio as
@@ -166,21 +161,11 @@ fn bulk_table(bulk_points: &[&Point]) -> String {
             None => {}
         }
     }
-    let mut verdict = Vec::new();
-    if !agree.is_empty() {
-        let at = agree.join(", ");
-        verdict.push(format!("D agrees with Enskog's value (|z| < 4) at {at}"));
-    }
-    if !above.is_empty() {
-        verdict.push(format!(
-            "D exceeds it (z ≥ 4) at {}: correlated motion (the vortices behind the 2D long-time tail) carries the disks further than uncorrelated collisions would",
-            above.join(", ")
-        ));
-    }
-    if !below.is_empty() {
-        let at = below.join(", ");
-        verdict.push(format!("D falls below it (z ≤ −4) at {at}"));
-    }
+    let verdict: Vec<String> = [("agree", agree), ("above", above), ("below", below)]
+        .into_iter()
+        .filter(|(_, at)| !at.is_empty())
+        .map(|(name, at)| fill(sentence(SENTENCES, name), &[("at", at.join(", "))]))
+        .collect();
     let verdict = match verdict.is_empty() {
         true => String::new(),
         false => format!("{}.", verdict.join("; ")),

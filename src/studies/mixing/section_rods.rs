@@ -9,6 +9,7 @@ use crate::model::chart::colour;
 use crate::model::report::Figure;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
+use crate::stats::named::named as sentence;
 use crate::stats::line::line;
 use crate::stats::summary::Stats;
 use crate::stats::table::table_row;
@@ -17,6 +18,8 @@ use crate::theory::mixing::equilibrium_concentration;
 
 const TEXT: &str = include_str!("rods.md");
 pub(super) const WIDEST: &str = include_str!("widest.md");
+/// The findings' sentences, one per outcome (the disks' too).
+pub(super) const SENTENCES: &str = include_str!("sentences.md");
 
 /// The scaling with the mass spread is fitted over spreads up to this
 /// (small spreads: each collision moves a fraction ~ epsilon^2 of the energy
@@ -27,16 +30,14 @@ pub const SMALL_SPREAD: f64 = 0.5;
 /// over.
 const MANY: f64 = 10.0;
 
+/// A point's name: its values of the results named, each after its symbol.
+pub(super) fn label_of(p: &Point, values: &[(&str, &str)]) -> String {
+    let values = values.iter().map(|(symbol, r)| format!("{symbol} = {}", num(p.first(r))));
+    named(p, values.collect::<Vec<_>>().join(", "))
+}
+
 fn label(p: &Point) -> String {
-    named(
-        p,
-        format!(
-            "N = {}, ε = {}, M/m̄ = {}",
-            num(p.first("particles")),
-            num(p.first("mass_spread")),
-            num(p.first("hot_mass_ratio"))
-        ),
-    )
+    label_of(p, &[("N", "particles"), ("ε", "mass_spread"), ("M/m̄", "hot_mass_ratio")])
 }
 
 /// A fit of ln tau (collision clock) against ln x over the fully mixed
@@ -119,14 +120,9 @@ pub fn part(points: &[Point], figures: &mut Vec<Figure>) -> String {
             count(p.collisions()),
         ]));
     }
-    let censored = if censored.is_empty() {
-        String::new()
-    } else {
-        format!(
-            "Some but not all runs mixed within their length at: {}. Their means are of the runs that \
-             did, so they are lower bounds, and these points enter no fit.\n\n",
-            censored.join("; ")
-        )
+    let censored = match censored.is_empty() {
+        true => String::new(),
+        false => fill(sentence(SENTENCES, "censored"), &[("at", censored.join("; "))]) + "\n\n",
     };
     let (fits, mut shown) = scaling(points, figures);
     shown.push_str(&curves(points, figures));
@@ -174,19 +170,15 @@ fn widest(points: &[Point]) -> String {
         .map(|p| length(p) / p.stat("mixing_collisions").mean)
         .fold(f64::INFINITY, f64::min);
     let shortest = at.iter().map(|p| length(p)).fold(f64::INFINITY, f64::min);
-    let verdict = if held >= MANY {
-        format!(
-            "A run of {} collisions per rod or more holds at least {} such times: it samples \
-             equilibrium many times over, so for such masses this kind of mixing is not slow.",
-            num(shortest.round()),
-            num(held.floor())
-        )
-    } else {
-        format!(
-            "A run holds only {} such times (fewer than {MANY}): against the run length, even \
-             this mixing is slow.",
-            num(held)
-        )
+    let verdict = match held >= MANY {
+        true => fill(
+            sentence(SENTENCES, "many"),
+            &[("length", num(shortest.round())), ("held", num(held.floor()))],
+        ),
+        false => fill(
+            sentence(SENTENCES, "few"),
+            &[("held", num(held)), ("many", MANY.to_string())],
+        ),
     };
     fill(
         WIDEST,
@@ -317,4 +309,14 @@ fn curves(points: &[Point], figures: &mut Vec<Figure>) -> String {
     );
     figures.push(figure);
     text
+}
+
+#[cfg(test)]
+mod tests {
+    /// Every outcome the halves name has its sentence.
+    #[test]
+    fn every_sentence_is_there() {
+        let names: Vec<&str> = crate::stats::named::names(super::SENTENCES).collect();
+        assert_eq!(names, ["censored", "many", "few", "agree", "above", "below"]);
+    }
 }
