@@ -451,11 +451,12 @@ fn dimple_text(label: &str, p: &Particle, e: &Ensemble) -> String {
         "rejected" => "gaussian_rejected",
         _ => "gaussian_fits",
     };
-    let finding = [
+    let values = [
         ("n", e.balls.len().to_string()),
         ("limit", named(FINDINGS, limit).into()),
         ("reject", num(REJECT)),
     ];
+    let finding = fill(named(FINDINGS, verdict(&p.exact)), &values);
     let text = fill(
         DIMPLE_PARTICLE,
         &[
@@ -470,10 +471,7 @@ fn dimple_text(label: &str, p: &Particle, e: &Ensemble) -> String {
             ("dof", num(e.dof)),
             ("power", num(0.5 * (e.dof - 3.0))),
             ("kurtosis", num(-6.0 / (e.dof + 2.0))),
-            (
-                "finding",
-                fill(named(FINDINGS, verdict(&p.exact)), &finding),
-            ),
+            ("finding", finding),
             ("reject", num(REJECT)),
         ],
     );
@@ -500,10 +498,8 @@ fn dimple_answer(all: &[Dimples]) -> String {
         let noise = off.abs() <= REJECT * (expected * (1.0 - p)).sqrt();
         let how = if off > 0.0 { "more" } else { "less" };
         let values = [("how", how.to_string()), ("reject", num(REJECT))];
-        fill(
-            named(FINDINGS, if noise { "noise" } else { "beyond_noise" }),
-            &values,
-        )
+        let name = if noise { "noise" } else { "beyond_noise" };
+        fill(named(FINDINGS, name), &values)
     });
     fill(
         DIMPLE_ANSWER,
