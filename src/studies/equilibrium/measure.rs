@@ -10,7 +10,7 @@ use crate::model::run_output::{Histogram, RunOutput};
 use crate::observe::Context;
 use crate::stats::quadratic::quadratic_at_zero;
 
-fn histogram<'a>(out: &'a RunOutput, name: &str) -> Option<&'a Histogram> {
+pub fn histogram<'a>(out: &'a RunOutput, name: &str) -> Option<&'a Histogram> {
     out.histograms.iter().find(|h| h.observable == name)
 }
 
@@ -110,12 +110,15 @@ pub fn contact(e: &Ensemble, h: &Histogram) -> Option<f64> {
         return None;
     }
     let g = radial_distribution(e, h);
-    let points: Vec<(f64, f64)> = (h.lo.iter().zip(&h.hi).zip(&g))
-        .filter(|((a, _), _)| **a >= sigma - 1e-9)
-        .take(CONTACT_BINS)
-        .map(|((a, b), g)| (0.5 * (a + b) - sigma, *g))
-        .collect();
-    (points.len() == CONTACT_BINS).then(|| quadratic_at_zero(&points))
+    let beyond = (h.lo.iter().zip(&h.hi).zip(&g)).filter(|((a, _), _)| **a >= sigma - 1e-9);
+    at_contact(beyond.map(|((a, b), g)| (0.5 * (a + b) - sigma, *g)))
+}
+
+/// A quadratic through the first `CONTACT_BINS` points (distance beyond
+/// contact, value), at contact; None with fewer.
+fn at_contact(points: impl Iterator<Item = (f64, f64)>) -> Option<f64> {
+    let first: Vec<(f64, f64)> = points.take(CONTACT_BINS).collect();
+    (first.len() == CONTACT_BINS).then(|| quadratic_at_zero(&first))
 }
 
 /// The centre density at a wall along x: the profile extrapolated to
@@ -129,8 +132,7 @@ pub fn wall_density(e: &Ensemble, h: &Histogram) -> Option<f64> {
     }
     let density = profile(e, h);
     let length = e.size[0];
-    let mut ends = Vec::new();
-    for high in [false, true] {
+    let end = |high: bool| {
         let mut points: Vec<(f64, f64)> = (h.lo.iter().zip(&h.hi).zip(&density))
             .map(|((a, b), n)| (0.5 * (a + b), *n))
             .map(|(x, n)| (if high { length - x } else { x }, n))
@@ -139,16 +141,9 @@ pub fn wall_density(e: &Ensemble, h: &Histogram) -> Option<f64> {
             .collect();
         points.sort_by(|a, b| a.0.total_cmp(&b.0));
         // Bins straddling contact are part empty: start beyond them.
-        let first: Vec<(f64, f64)> = (points.into_iter())
-            .filter(|(x, _)| *x >= 0.5 * (h.hi[0] - h.lo[0]))
-            .take(CONTACT_BINS)
-            .collect();
-        if first.len() < CONTACT_BINS {
-            return None;
-        }
-        ends.push(quadratic_at_zero(&first));
-    }
-    Some(0.5 * (ends[0] + ends[1]))
+        at_contact((points.into_iter()).filter(|(x, _)| *x >= 0.5 * (h.hi[0] - h.lo[0])))
+    };
+    Some(0.5 * (end(false)? + end(true)?))
 }
 
 /// Number density along x at each bin of a density_x histogram.

@@ -6,6 +6,7 @@ use super::RESULTS;
 use super::charts::{self, Runs};
 use super::dimple::{self, central_share, has_dimple, independent_samples};
 use super::ensemble::Ensemble;
+use super::measure::histogram;
 use super::settling;
 use super::tests_of::{MIN_EXPECTED, Particle, Tests, tests_of};
 use crate::model::chart::ChartSpec;
@@ -36,6 +37,8 @@ const FLUID_HEAD: &str = include_str!("fluid.md");
 const SETTLING_HEAD: &str = include_str!("settling.md");
 const METHODS: &str = include_str!("methods.md");
 const CAPTIONS: &str = include_str!("captions.md");
+/// The sentences a finding is told in, one per outcome.
+const FINDINGS: &str = include_str!("findings.md");
 
 /// A group of runs: a case, or a sweep point.
 struct Group<'a> {
@@ -68,16 +71,16 @@ fn groups(runs: &[(RunSpec, RunOutput)]) -> Vec<Group<'_>> {
 /// "200 disks, φ = 0.4, periodic" for a sweep point.
 fn describe(e: &Ensemble) -> String {
     let kind = ["rods", "disks", "spheres"][e.dimension.clamp(1, 3) - 1];
-    let boundary = match (e.periodic[0], e.periodic.iter().all(|p| *p)) {
+    let (n, phi) = (e.balls.len(), num(e.packing()));
+    format!("{n} {kind}, φ = {phi}, {}", boundary(e))
+}
+
+fn boundary(e: &Ensemble) -> &'static str {
+    match (e.periodic[0], e.periodic.iter().all(|p| *p)) {
         (_, true) => "periodic",
         (false, false) => "walls along x",
         (true, false) => "walls",
-    };
-    format!(
-        "{} {kind}, φ = {}, {boundary}",
-        e.balls.len(),
-        num(e.packing())
-    )
+    }
 }
 
 /// "z (p, bins)" of an agreement, or "–".
@@ -120,13 +123,8 @@ pub fn section(runs: &AllRuns) -> anyhow::Result<ReportSection> {
             if let Some((time, energy)) = runs.mean(g.point, "kinetic_energy") {
                 let start = energy.first().map_or(f64::NAN, |s| s.mean);
                 let drift = (energy.iter()).fold(0.0, |d, s| f64::max(d, (s.mean - start).abs()));
-                let chart = charts::settling(
-                    &format!("{}: total energy", g.label),
-                    &time,
-                    &energy,
-                    "total kinetic energy",
-                    None,
-                );
+                let title = format!("{}: total energy", g.label);
+                let chart = charts::settling(&title, &time, &energy, "total kinetic energy", None);
                 p.figure_with(&g, "energy", Some(chart), ("drift", num(drift / start)));
             }
         } else if e.dimension > 1 {
@@ -291,21 +289,19 @@ impl Parts {
             num(cost),
             count(collisions),
         );
-        let tested = |p: &&Particle| p.exact.is_some() || p.gaussian.is_some() || p.halves.is_some();
-        if !t.particles.iter().any(|p| tested(&p)) {
-            let _ = writeln!(
-                self.per_particle,
-                "**{}**: no bin of any particle's v_x histogram expects {} counts in a run (too few samples a run), so no per-particle test is made.\n",
-                g.label, MIN_EXPECTED
-            );
+        let tested = |p: &Particle| p.exact.is_some() || p.gaussian.is_some() || p.halves.is_some();
+        let tested = t.particles.iter().any(tested);
+        let values = [
+            ("label", g.label.clone()),
+            ("min", MIN_EXPECTED.to_string()),
+        ];
+        let head = named(FINDINGS, if tested { "tested" } else { "untested" });
+        let _ = writeln!(self.per_particle, "{}\n", fill(head, &values));
+        if !tested {
             return;
         }
-        let _ = writeln!(
-            self.per_particle,
-            "**{}**, each particle (left to right): z of its v_x histogram against the exact law, against the Gaussian, and of its early against its late half.\n\n\
-             | rank | mass | z exact | z Gaussian | z halves |\n|---|---|---|---|---|",
-            g.label
-        );
+        self.per_particle += "| rank | mass | z exact | z Gaussian | z halves |\n";
+        self.per_particle += "|---|---|---|---|---|\n";
         for p in &t.particles {
             let _ = writeln!(
                 self.per_particle,
@@ -328,7 +324,7 @@ impl Parts {
         };
         let name = format!("velocity_x.{}", p.index);
         let hists: Vec<&[f64]> = (view.iter())
-            .filter_map(|(_, o)| o.histograms.iter().find(|h| h.observable == name))
+            .filter_map(|(_, o)| histogram(o, &name))
             .map(|h| h.count.as_slice())
             .collect();
         let Some(first) = hists.first() else { return };
@@ -399,15 +395,10 @@ impl Parts {
     /// A row of the disks' table and their figures.
     fn fluid(&mut self, g: &Group, view: &Runs, t: &Tests) {
         let e = view[0].0;
-        let s = |n: &str| {
-            let s = stat(view, n);
-            if s.n == 0 {
-                "–".into()
-            } else {
-                pm(s.mean, s.stderr)
-            }
+        let s = |n: &str| match stat(view, n) {
+            s if s.n == 0 => "–".into(),
+            s => pm(s.mean, s.stderr),
         };
-        let periodic = e.periodic.iter().all(|p| *p);
         let cost: f64 = view.iter().map(|(_, o)| o.cpu_seconds).sum();
         let _ = writeln!(
             self.fluid,
@@ -415,11 +406,7 @@ impl Parts {
             g.label,
             e.balls.len(),
             num(e.packing()),
-            if periodic {
-                "periodic"
-            } else {
-                "walls along x"
-            },
+            boundary(e),
             view.len(),
             num(e.kt()),
             z_text(&t.vx_exact),
@@ -460,22 +447,16 @@ struct Dimples {
 /// Particle 1's tests, and what its exact law looks like.
 fn dimple_text(label: &str, p: &Particle, e: &Ensemble) -> String {
     let z = |a: &Option<Agreement>| a.map_or("–".into(), |a| num(a.z));
-    let limit = if verdict(&p.gaussian) == "rejected" {
-        "which is just not the Gaussian"
-    } else {
-        "and at this precision the Gaussian fits too"
+    let limit = match verdict(&p.gaussian) {
+        "rejected" => "gaussian_rejected",
+        _ => "gaussian_fits",
     };
-    let finding = match verdict(&p.exact) {
-        "holds" => format!(
-            "N = {} is not too small for equilibrium: the particle follows its finite-N law, {limit}.",
-            e.balls.len()
-        ),
-        "rejected" => format!(
-            "The particle departs from its finite-N law beyond {} standard deviations.",
-            num(REJECT)
-        ),
-        _ => String::new(),
-    };
+    let values = [
+        ("n", e.balls.len().to_string()),
+        ("limit", named(FINDINGS, limit).into()),
+        ("reject", num(REJECT)),
+    ];
+    let finding = fill(named(FINDINGS, verdict(&p.exact)), &values);
     let text = fill(
         DIMPLE_PARTICLE,
         &[
@@ -514,19 +495,11 @@ fn dimple_answer(all: &[Dimples]) -> String {
     let verdict = few.chance_independent.map_or(String::new(), |p| {
         let expected = p * few.runs as f64;
         let off = few.seen as f64 - expected;
-        if off.abs() <= REJECT * (expected * (1.0 - p)).sqrt() {
-            "That is as often as the noise of a histogram of so few independent samples makes one: \
-             the dimple needs nothing more, neither a departure from the finite-N law nor a failure to \
-             reach equilibrium."
-                .to_string()
-        } else {
-            let how = if off > 0.0 { "more" } else { "less" };
-            format!(
-                "That is {how} often than the noise of a histogram of so few independent samples makes \
-                 one (beyond {} standard deviations of the count): that noise alone does not account for it.",
-                num(REJECT)
-            )
-        }
+        let noise = off.abs() <= REJECT * (expected * (1.0 - p)).sqrt();
+        let how = if off > 0.0 { "more" } else { "less" };
+        let values = [("how", how.to_string()), ("reject", num(REJECT))];
+        let name = if noise { "noise" } else { "beyond_noise" };
+        fill(named(FINDINGS, name), &values)
     });
     fill(
         DIMPLE_ANSWER,
@@ -592,6 +565,11 @@ mod tests {
         let values = ["label", "replicas", "dimension", "drift"].map(|k| (k, "x".to_string()));
         for name in names(CAPTIONS) {
             let text = fill(named(CAPTIONS, name), &values);
+            assert!(unfilled(&text).is_empty(), "{text}");
+        }
+        let values = ["label", "min", "n", "limit", "reject", "how"].map(|k| (k, "x".to_string()));
+        for name in names(FINDINGS) {
+            let text = fill(named(FINDINGS, name), &values);
             assert!(unfilled(&text).is_empty(), "{text}");
         }
     }

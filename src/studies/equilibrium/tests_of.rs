@@ -4,8 +4,9 @@
 //! its own law (masses are drawn per run); bin errors come from the
 //! replicas' spread (`stats::replicas`).
 
+use super::charts::Runs;
 use super::ensemble::Ensemble;
-use crate::model::run_output::{Histogram, RunOutput};
+use super::measure::histogram as find;
 use crate::stats::replicas::{Agreement, fractions, zero_mean};
 use crate::theory::maxwell::{MaxwellSpeed, normal_cdf};
 
@@ -42,15 +43,11 @@ pub struct Tests {
     pub speed_mb: Option<Agreement>,
 }
 
-fn find<'a>(out: &'a RunOutput, name: &str) -> Option<&'a Histogram> {
-    out.histograms.iter().find(|h| h.observable == name)
-}
-
 /// Deviations of each replica's histogram `name(r)` from the law's
 /// probabilities `law(r, lo, hi)`, and the bins with enough expected
 /// counts; None when a replica lacks the histogram.
 fn deviations(
-    runs: &[(&Ensemble, &RunOutput)],
+    runs: &Runs,
     name: &dyn Fn(usize) -> String,
     law: &dyn Fn(usize, f64, f64) -> f64,
 ) -> Option<(Vec<Vec<f64>>, Vec<bool>)> {
@@ -59,25 +56,17 @@ fn deviations(
     for (r, (_, out)) in runs.iter().enumerate() {
         let h = find(out, &name(r))?;
         let total: f64 = h.count.iter().sum();
-        let p: Vec<f64> =
-            h.lo.iter()
-                .zip(&h.hi)
-                .map(|(a, b)| law(r, *a, *b))
-                .collect();
+        let p: Vec<f64> = (h.lo.iter().zip(&h.hi))
+            .map(|(a, b)| law(r, *a, *b))
+            .collect();
         if expected.is_empty() {
             expected = vec![0.0; p.len()];
         }
-        expected
-            .iter_mut()
-            .zip(&p)
-            .for_each(|(e, p)| *e += p * total);
-        rows.push(
-            fractions(&h.count)
-                .iter()
-                .zip(&p)
-                .map(|(f, p)| f - p)
-                .collect(),
-        );
+        for (e, p) in expected.iter_mut().zip(&p) {
+            *e += p * total;
+        }
+        let f = fractions(&h.count);
+        rows.push(f.iter().zip(&p).map(|(f, p)| f - p).collect());
     }
     let n = runs.len() as f64;
     let keep = expected.iter().map(|e| e / n >= MIN_EXPECTED).collect();
@@ -85,7 +74,7 @@ fn deviations(
 }
 
 fn test(
-    runs: &[(&Ensemble, &RunOutput)],
+    runs: &Runs,
     name: &dyn Fn(usize) -> String,
     law: &dyn Fn(usize, f64, f64) -> f64,
 ) -> Option<Agreement> {
@@ -93,7 +82,7 @@ fn test(
     zero_mean(&rows, &keep)
 }
 
-pub fn tests_of(runs: &[(&Ensemble, &RunOutput)]) -> Tests {
+pub fn tests_of(runs: &Runs) -> Tests {
     let mut t = Tests::default();
     let Some((first, _)) = runs.first() else {
         return t;
@@ -163,26 +152,16 @@ pub fn tests_of(runs: &[(&Ensemble, &RunOutput)]) -> Tests {
 }
 
 /// Every rank's position histogram against its law, in one test.
-fn positions(runs: &[(&Ensemble, &RunOutput)]) -> Option<Agreement> {
+fn positions(runs: &Runs) -> Option<Agreement> {
+    let laws: Vec<_> = runs
+        .iter()
+        .map(|(e, _)| e.rod_laws())
+        .collect::<Option<_>>()?;
     let mut rows: Vec<Vec<f64>> = vec![Vec::new(); runs.len()];
     let mut keep = Vec::new();
-    let ranks = runs.first()?.0.rod_laws()?.len();
-    for k in 0..ranks {
-        let (dev, kept) = deviations(
-            runs,
-            &|r| {
-                format!(
-                    "position_x.{}",
-                    runs[r].0.rod_laws().map_or(0, |l| l[k].0.index)
-                )
-            },
-            &|r, a, b| {
-                runs[r]
-                    .0
-                    .rod_laws()
-                    .map_or(f64::NAN, |l| l[k].1.probability(a, b))
-            },
-        )?;
+    for k in 0..laws.first()?.len() {
+        let name = |r: usize| format!("position_x.{}", laws[r][k].0.index);
+        let (dev, kept) = deviations(runs, &name, &|r, a, b| laws[r][k].1.probability(a, b))?;
         rows.iter_mut().zip(dev).for_each(|(row, d)| row.extend(d));
         keep.extend(kept);
     }

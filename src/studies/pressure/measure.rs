@@ -44,25 +44,6 @@ pub struct Measured {
     pub drift: f64,
 }
 
-/// Z from a pressure `p`: walls or virial (see the module doc).
-struct Scale {
-    volume: f64,
-    n: f64,
-    kt: f64,
-    ideal: f64,
-    /// d V / (d V - sigma A / 2): 1 without walls.
-    wall_term: f64,
-}
-
-impl Scale {
-    fn wall(&self, p: f64) -> f64 {
-        p * self.volume / (self.n * self.kt)
-    }
-    fn virial(&self, p: f64) -> f64 {
-        1.0 + (p * self.wall_term * self.volume - self.ideal) / (self.n * self.kt)
-    }
-}
-
 pub fn measure<const D: usize>(
     particles: &[Particle<D>],
     ctx: &Context,
@@ -76,29 +57,26 @@ pub fn measure<const D: usize>(
     let n = movable.len() as f64;
     // Mean diameter: exact for one size, which the study uses.
     let sigma = movable.iter().map(|p| 2.0 * p.radius).sum::<f64>() / n;
+    let (kt, ideal) = (
+        2.0 * kinetic / ctx.degrees_of_freedom,
+        2.0 * kinetic / D as f64,
+    );
+    // d V / (d V - sigma A / 2): 1 without walls.
     let dv = D as f64 * ctx.volume;
-    let scale = Scale {
-        volume: ctx.volume,
-        n,
-        kt: 2.0 * kinetic / ctx.degrees_of_freedom,
-        ideal: 2.0 * kinetic / D as f64,
-        wall_term: dv / (dv - 0.5 * sigma * ctx.wall_area),
-    };
+    let wall_term = dv / (dv - 0.5 * sigma * ctx.wall_area);
+    // Z from a pressure `p`: walls or virial (see the module doc).
+    let z_wall = |p: f64| p * ctx.volume / (n * kt);
+    let z_virial = |p: f64| 1.0 + (p * wall_term * ctx.volume - ideal) / (n * kt);
     let (packing_fraction, density) = packing::of_particles(particles, ctx.volume);
     let series = |name: &str, f: &dyn Fn(f64) -> f64| -> Option<(Vec<f64>, f64)> {
         let s = out.series(name)?;
-        let dt = if s.t.len() > 1 {
-            s.t[1] - s.t[0]
-        } else {
-            f64::NAN
-        };
+        let dt = s.t.get(1).map_or(f64::NAN, |t| t - s.t[0]);
         Some((s.value.iter().map(|&p| f(p)).collect(), dt))
     };
-    let wall = series("wall_pressure", &|p| scale.wall(p));
-    let virial = series("virial_pressure", &|p| scale.virial(p));
-    let scalar = |name: &str, f: &dyn Fn(f64) -> f64| out.scalar(name).map(f);
-    let z_wall_scalar = scalar("wall_pressure", &|p| scale.wall(p));
-    let z_virial_scalar = scalar("virial_pressure", &|p| scale.virial(p));
+    let wall = series("wall_pressure", &z_wall);
+    let virial = series("virial_pressure", &z_virial);
+    let z_wall_scalar = out.scalar("wall_pressure").map(z_wall);
+    let z_virial_scalar = out.scalar("virial_pressure").map(z_virial);
 
     let mut m = Measured {
         z: f64::NAN,

@@ -5,8 +5,8 @@ use super::packing;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
 use crate::model::scene::Placement;
+use crate::stats::groups::first_seen;
 use crate::stats::summary::Stats;
-use std::collections::BTreeMap;
 
 /// Replicas from which their spread alone is the error bar (a standard
 /// error good to 18 %, which also covers what a run's blocks cannot see).
@@ -77,15 +77,13 @@ impl Point {
     }
 }
 
+/// The sweep's points with a measured Z, in plan order.
 pub fn points(runs: &[(RunSpec, RunOutput)]) -> Vec<Point> {
-    let mut by_id: BTreeMap<u64, Vec<&(RunSpec, RunOutput)>> = BTreeMap::new();
-    for r in runs
-        .iter()
-        .filter(|(s, o)| s.case.is_none() && o.scalar("Z").is_some_and(|z| !z.is_nan()))
-    {
-        by_id.entry(r.0.point_id).or_default().push(r);
-    }
-    by_id.into_values().filter_map(|rs| point(&rs)).collect()
+    let measured = (runs.iter())
+        .filter(|(s, o)| s.case.is_none() && o.scalar("Z").is_some_and(|z| !z.is_nan()));
+    (first_seen(measured, |a, b| a.0.point_id == b.0.point_id).iter())
+        .filter_map(|rs| point(rs))
+        .collect()
 }
 
 fn point(rs: &[&(RunSpec, RunOutput)]) -> Option<Point> {

@@ -16,6 +16,7 @@ use crate::stats::fill::fill;
 use crate::stats::format::{num, pm};
 use crate::stats::mser;
 use crate::stats::summary::{Stats, z_score};
+use crate::stats::table::table_row;
 use std::fmt::Write;
 
 const INTRO: &str = include_str!("intro.md");
@@ -269,30 +270,26 @@ fn note(eqs: &[Equation], p: &Point) -> String {
 }
 
 fn walls_table(all: &[Point]) -> String {
-    let both: Vec<&Point> = all
-        .iter()
-        .filter(|p| p.wall_minus_virial.is_some())
-        .collect();
-    if both.is_empty() {
-        return String::new();
-    }
-    let mut md = WALLS.to_string();
     let stats = |s: Option<&Stats>| s.map_or("–".into(), |s| pm(s.mean, s.stderr));
-    for p in both {
-        let diff = p.wall_minus_virial.as_ref().expect("filtered");
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {} | {} | {} | {} |",
-            p.dimension,
-            num(p.eta),
-            p.particles,
-            stats(p.z_wall.as_ref()),
-            stats(p.z_virial.as_ref()),
-            pm(diff.mean, diff.stderr),
-            z_text(diff, 0.0),
-        );
+    let rows: String = (all.iter())
+        .filter_map(|p| Some((p, p.wall_minus_virial.as_ref()?)))
+        .map(|(p, diff)| {
+            table_row(&[
+                p.dimension.to_string(),
+                num(p.eta),
+                p.particles.to_string(),
+                stats(p.z_wall.as_ref()),
+                stats(p.z_virial.as_ref()),
+                pm(diff.mean, diff.stderr),
+                z_text(diff, 0.0),
+            ])
+        })
+        .collect();
+    if rows.is_empty() {
+        rows
+    } else {
+        WALLS.to_string() + &rows
     }
-    md
 }
 
 fn finite_size_table(fits: &[Fit]) -> String {
