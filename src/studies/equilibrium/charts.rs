@@ -8,7 +8,7 @@ use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::run_output::{Histogram, RunOutput};
 use crate::stats::replicas::fractions;
 use crate::stats::summary::Stats;
-use crate::studies::curves::mean_with_band;
+use crate::studies::curves::{bar, chart, markers, mean_with_band, measured, polyline, sampled};
 use crate::theory::maxwell::{MaxwellSpeed, normal_pdf};
 
 pub type Runs<'a> = [(&'a Ensemble, &'a RunOutput)];
@@ -66,53 +66,22 @@ fn means(p: &Pooled) -> Vec<(f64, f64)> {
         .collect()
 }
 
-fn measured(p: &Pooled, i: usize, label: &str) -> Vec<Layer> {
-    let bars = (p.x.iter().zip(&p.density))
-        .map(|(x, s)| (*x, s.mean - s.stderr, s.mean, s.mean + s.stderr))
-        .collect();
-    vec![
-        Layer::ErrorBars {
-            bars,
-            paint: colour(i).faded(0.6),
-        },
-        Layer::Markers {
-            points: means(p),
-            paint: colour(i),
-            label: Some(label.into()),
-        },
-    ]
+/// A pooled histogram: markers at its means over fainter error bars.
+fn measured_pooled(p: &Pooled, i: usize, label: &str) -> Vec<Layer> {
+    let bars = (p.x.iter().zip(&p.density)).map(|(x, s)| bar(*x, s));
+    let paint = colour(i).faded(0.6);
+    let markers = markers(means(p), colour(i), Some(label.into()));
+    vec![Layer::ErrorBars { bars: bars.collect(), paint }, markers]
 }
 
-fn curve(
-    f: &dyn Fn(f64) -> f64,
-    lo: f64,
-    hi: f64,
-    i: usize,
-    dashed: bool,
-    label: Option<&str>,
-) -> Layer {
-    Layer::Line {
-        points: (0..=400)
-            .map(|k| lo + (hi - lo) * k as f64 / 400.0)
-            .map(|x| (x, f(x)))
-            .collect(),
-        paint: colour(i),
-        width: 2,
-        dashed,
-        label: label.map(Into::into),
-    }
+/// `f` over [lo, hi], two pixels wide in the `i`th colour.
+fn curve(f: impl Fn(f64) -> f64, (lo, hi): (f64, f64), i: usize, dashed: bool, label: &str) -> Layer {
+    polyline(sampled(lo, hi, 400, f), colour(i), 2, dashed, Some(label.into()))
 }
 
 /// The unit Gaussian, dashed.
-fn gaussian(lo: f64, hi: f64) -> Layer {
-    curve(
-        &|u| normal_pdf(u, 0.0, 1.0),
-        lo,
-        hi,
-        6,
-        true,
-        Some("Gaussian"),
-    )
+fn gaussian(span: (f64, f64)) -> Layer {
+    curve(|u| normal_pdf(u, 0.0, 1.0), span, 6, true, "Gaussian")
 }
 
 fn range(p: &Pooled) -> (f64, f64) {
@@ -152,7 +121,7 @@ pub fn velocity(
             },
         )?;
         span = range(&p);
-        layers.extend(measured(&p, k, label));
+        layers.extend(measured_pooled(&p, k, label));
     }
     let law = crate::theory::microcanonical::VelocityMarginal {
         centre: 0.0,
@@ -160,15 +129,8 @@ pub fn velocity(
         dof,
     };
     let label = format!("exact, f = {dof}");
-    layers.push(curve(
-        &|u| law.pdf(u),
-        span.0,
-        span.1,
-        6,
-        false,
-        Some(&label),
-    ));
-    layers.push(gaussian(span.0, span.1));
+    layers.push(curve(|u| law.pdf(u), span, 6, false, &label));
+    layers.push(gaussian(span));
     Some(linear(
         title,
         "(vₓ − V) / √(kT/m)  (V, kT/m: the exact law's centre and variance)",
@@ -183,7 +145,6 @@ pub fn velocity(
 pub fn std_against_mass(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let first = runs.first()?.0;
     let mut bars = Vec::new();
-    let mut points = Vec::new();
     let mut theory = Vec::new();
     for ball in first.by_rank() {
         let i = ball.index;
@@ -205,39 +166,19 @@ pub fn std_against_mass(title: &str, runs: &Runs) -> Option<ChartSpec> {
         if s.n == 0 {
             continue;
         }
-        bars.push((m.mean, s.mean - s.stderr, s.mean, s.mean + s.stderr));
-        points.push((m.mean, s.mean));
+        bars.push(bar(m.mean, &s));
         theory.push((m.mean, x.mean));
     }
     theory.sort_by(|a, b| a.0.total_cmp(&b.0));
-    if points.is_empty() {
+    if bars.is_empty() {
         return None;
     }
-    Some(ChartSpec {
-        title: title.into(),
-        x_label: "mass m".into(),
-        y_label: "std of vₓ".into(),
-        x_log: true,
-        y_log: true,
-        layers: vec![
-            Layer::Line {
-                points: theory,
-                paint: colour(6),
-                width: 2,
-                dashed: true,
-                label: Some("exact: √(kT/m), kT = 2E/f".into()),
-            },
-            Layer::ErrorBars {
-                bars,
-                paint: colour(0),
-            },
-            Layer::Markers {
-                points,
-                paint: colour(0),
-                label: Some("measured (Gaussian fit, mean ± standard error over replicas)".into()),
-            },
-        ],
-    })
+    let label = "exact: √(kT/m), kT = 2E/f".to_string();
+    let mut layers = vec![polyline(theory, colour(6), 2, true, Some(label))];
+    let label = "measured (Gaussian fit, mean ± standard error over replicas)";
+    layers.extend(measured(bars, colour(0), label));
+    let labels = (title.into(), "mass m", "std of vₓ");
+    Some(chart(labels, (true, true), layers))
 }
 
 /// Every rod's position histogram (pooled) beside its order-statistics law.
@@ -248,14 +189,12 @@ pub fn positions(title: &str, runs: &Runs) -> Option<ChartSpec> {
         let p = pooled(runs, &|_| format!("position_x.{}", ball.index), &|_| {
             (0.0, 1.0)
         })?;
+        let label = (k == 0).then(|| "measured (mean over replicas)".into());
+        layers.push(markers(means(&p), colour(k), label));
+        let label = (k == 0).then(|| "order statistics (exact)".into());
         let (lo, hi) = range(&p);
-        layers.push(Layer::Markers {
-            points: means(&p),
-            paint: colour(k),
-            label: (k == 0).then(|| "measured (mean over replicas)".into()),
-        });
-        let label = (k == 0).then_some("order statistics (exact)");
-        layers.push(curve(&|x| law.pdf(x), lo, hi, k, false, label));
+        let points = sampled(lo, hi, 400, |x| law.pdf(x));
+        layers.push(polyline(points, colour(k), 2, false, label));
     }
     Some(linear(
         title,
@@ -270,9 +209,8 @@ pub fn scaled_vx(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let p = pooled(runs, &|_| "scaled_velocity_x".into(), &|r| {
         (0.0, runs[r].0.kt().sqrt())
     })?;
-    let (lo, hi) = range(&p);
-    let mut layers = measured(&p, 0, MEASURED);
-    layers.push(gaussian(lo, hi));
+    let mut layers = measured_pooled(&p, 0, MEASURED);
+    layers.push(gaussian(range(&p)));
     Some(linear(
         title,
         "√m vₓ / √(kT), kT = 2E/f",
@@ -295,11 +233,10 @@ pub fn speed(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let kt = e.kt().sqrt();
     let mass = e.balls.first().map_or(1.0, |b| b.mass);
     let exact = e.speed_law(mass);
-    let mut layers = measured(&p, 0, MEASURED);
-    let label = Some("Maxwell-Boltzmann");
-    layers.push(curve(&|u| mb.pdf(u), 0.0, hi, 6, true, label));
-    let label = Some("exact, finite N");
-    layers.push(curve(&|u| exact.pdf(u * kt) * kt, 0.0, hi, 1, false, label));
+    let mut layers = measured_pooled(&p, 0, MEASURED);
+    layers.push(curve(|u| mb.pdf(u), (0.0, hi), 6, true, "Maxwell-Boltzmann"));
+    let label = "exact, finite N";
+    layers.push(curve(|u| exact.pdf(u * kt) * kt, (0.0, hi), 1, false, label));
     Some(linear(
         title,
         "√m |v| / √(kT), kT = 2E/f",
@@ -319,7 +256,7 @@ pub fn density(title: &str, runs: &Runs) -> Option<ChartSpec> {
         title,
         "x [σ]",
         "n(x) / mean n",
-        vec![plain(points, label)],
+        vec![polyline(points, colour(0), 2, false, Some(label))],
     ))
 }
 
@@ -329,7 +266,8 @@ pub fn radial(title: &str, runs: &Runs, reach: f64) -> Option<ChartSpec> {
     let g = |h: &Histogram| radial_distribution(e, h);
     let (points, n) = mean_over(runs, "pair_distance", &g, reach)?;
     let label = format!("mean over {n} replicas (N(N − 1) normalisation)");
-    Some(linear(title, "r [σ]", "g(r)", vec![plain(points, label)]))
+    let layers = vec![polyline(points, colour(0), 2, false, Some(label))];
+    Some(linear(title, "r [σ]", "g(r)", layers))
 }
 
 /// The mean over the replicas that have histogram `name` of `per` of it,
@@ -353,27 +291,9 @@ fn mean_over(
     Some((points, per.len()))
 }
 
-/// A solid line of width 2 in the first colour.
-fn plain(points: Vec<(f64, f64)>, label: String) -> Layer {
-    Layer::Line {
-        points,
-        paint: colour(0),
-        width: 2,
-        dashed: false,
-        label: Some(label),
-    }
-}
-
 /// A chart with linear axes.
 fn linear(title: &str, x_label: &str, y_label: &str, layers: Vec<Layer>) -> ChartSpec {
-    ChartSpec {
-        title: title.into(),
-        x_label: x_label.into(),
-        y_label: y_label.into(),
-        x_log: false,
-        y_log: false,
-        layers,
-    }
+    chart((title.into(), x_label, y_label), (false, false), layers)
 }
 
 /// MacKay's scatter plots, from the first replica's stored samples: each
@@ -388,16 +308,8 @@ pub fn scatter(
     let mut layers = Vec::new();
     for (k, (x, y, label)) in sets.iter().enumerate() {
         let (x, y) = (out.series(x)?, out.series(y)?);
-        layers.push(Layer::Markers {
-            points: x
-                .value
-                .iter()
-                .copied()
-                .zip(y.value.iter().copied())
-                .collect(),
-            paint: colour(k).faded(0.5),
-            label: Some(label.clone()),
-        });
+        let points = x.value.iter().copied().zip(y.value.iter().copied());
+        layers.push(markers(points.collect(), colour(k).faded(0.5), Some(label.clone())));
     }
     Some(linear(title, axes.0, axes.1, layers))
 }
@@ -414,13 +326,8 @@ pub fn settling(
     let label = "mean over replicas (band: ± standard error)".to_string();
     let mut layers = mean_with_band(t, mean, colour(0), label).to_vec();
     if let (Some((level, label)), Some(t0), Some(t1)) = (reference, t.first(), t.last()) {
-        layers.push(Layer::Line {
-            points: vec![(*t0, level), (*t1, level)],
-            paint: colour(6),
-            width: 2,
-            dashed: true,
-            label: Some(label.into()),
-        });
+        let points = vec![(*t0, level), (*t1, level)];
+        layers.push(polyline(points, colour(6), 2, true, Some(label.into())));
     }
     linear(title, "time t", y_label, layers)
 }

@@ -4,8 +4,9 @@
 //! prediction drawn in, and his question answered in numbers.
 
 use super::cases::{self, First};
-use crate::model::chart::{ChartSpec, Layer, Paint};
+use crate::model::chart::{Layer, Paint};
 use crate::model::report::Figure;
+use crate::studies::curves::{figure, polyline};
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
 use crate::stats::summary::Stats;
@@ -248,39 +249,20 @@ fn spacetime(
         .filter_map(|i| {
             let s = first.out.series(&format!("x.{i}"))?;
             let species = &built.species[built.particles[i].species as usize];
-            Some(Layer::Line {
-                points: s.t.iter().zip(&s.value).filter_map(before).collect(),
-                paint: Paint::solid(colour(species)),
-                width: if species == "piston" { 3 } else { 1 },
-                dashed: false,
-                label: None,
-            })
+            let points = s.t.iter().zip(&s.value).filter_map(before).collect();
+            let width = if species == "piston" { 3 } else { 1 };
+            Some(polyline(points, Paint::solid(colour(species)), width, false, None))
         })
         .collect();
     for (path, rgb, label) in paths {
-        layers.push(Layer::Line {
-            points: path
-                .iter()
-                .map(|(t, x)| (t, x))
-                .filter_map(before)
-                .collect(),
-            paint: Paint::solid(*rgb),
-            width: 2,
-            dashed: true,
-            label: Some(label.to_string()),
-        });
+        let points = path.iter().map(|(t, x)| (t, x)).filter_map(before);
+        let label = Some(label.to_string());
+        layers.push(polyline(points.collect(), Paint::solid(*rgb), 2, true, label));
     }
     let name = format!("mackay_spacetime_{horizon}.svg");
-    figures.push(Figure {
-        file: name.clone(),
-        chart: ChartSpec {
-            title: format!("MacKay's piston: positions, first {horizon} time units"),
-            x_label: "position x [σ]".into(),
-            y_label: "time t".into(),
-            layers,
-            ..Default::default()
-        },
-    });
+    let title = format!("MacKay's piston: positions, first {horizon} time units");
+    let labels = (title, "position x [σ]", "time t");
+    figures.push(figure(&name, labels, (false, false), layers));
     name
 }
 
@@ -300,46 +282,20 @@ pub(super) fn energies<const D: usize>(
         .iter()
         .filter_map(|s| {
             let species = s.observable.strip_prefix("kinetic_energy.")?;
-            Some(Layer::Line {
-                points: s.t.iter().zip(&s.value).filter_map(before).collect(),
-                paint: Paint::solid(colour(species)),
-                width: 2,
-                dashed: false,
-                label: Some(species.to_string()),
-            })
+            let points = s.t.iter().zip(&s.value).filter_map(before).collect();
+            let label = Some(species.to_string());
+            Some(polyline(points, Paint::solid(colour(species)), 2, false, label))
         })
         .collect();
-    layers.push(Layer::Line {
-        points: first
-            .samples
-            .t
-            .iter()
-            .zip(&first.energy)
-            .filter_map(before)
-            .collect(),
-        paint: Paint::solid(PURPLE).faded(0.6),
-        width: 1,
-        dashed: true,
-        label: Some("piston oscillator energy".into()),
-    });
-    let equilibrium = first.equilibrium;
-    layers.push(Layer::Line {
-        points: vec![(0.0, equilibrium), (horizon, equilibrium)],
-        paint: Paint::solid(GREY),
-        width: 1,
-        dashed: true,
-        label: Some("its equilibrium mean".into()),
-    });
-    figures.push(Figure {
-        file: name.to_string(),
-        chart: ChartSpec {
-            title: title.to_string(),
-            x_label: "time t".into(),
-            y_label: "kinetic energy".into(),
-            layers,
-            ..Default::default()
-        },
-    });
+    let oscillator = first.samples.t.iter().zip(&first.energy).filter_map(before);
+    let label = Some("piston oscillator energy".into());
+    let paint = Paint::solid(PURPLE).faded(0.6);
+    layers.push(polyline(oscillator.collect(), paint, 1, true, label));
+    let equilibrium = vec![(0.0, first.equilibrium), (horizon, first.equilibrium)];
+    let label = Some("its equilibrium mean".into());
+    layers.push(polyline(equilibrium, Paint::solid(GREY), 1, true, label));
+    let labels = (title.to_string(), "time t", "kinetic energy");
+    figures.push(figure(name, labels, (false, false), layers));
 }
 
 #[cfg(test)]
