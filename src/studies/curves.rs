@@ -77,12 +77,12 @@ pub fn sampled(lo: f64, hi: f64, n: usize, f: impl Fn(f64) -> f64) -> Vec<(f64, 
 /// A chart: title and axis labels, which axes (x, y) are logarithmic, and
 /// its layers.
 pub fn chart(
-    (title, x_label, y_label): (String, &str, &str),
+    (title, x_label, y_label): (impl Into<String>, &str, &str),
     (x_log, y_log): (bool, bool),
     layers: Vec<Layer>,
 ) -> ChartSpec {
     ChartSpec {
-        title,
+        title: title.into(),
         x_label: x_label.into(),
         y_label: y_label.into(),
         x_log,

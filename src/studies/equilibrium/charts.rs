@@ -68,15 +68,18 @@ fn means(p: &Pooled) -> Vec<(f64, f64)> {
 
 /// A pooled histogram: markers at its means over fainter error bars.
 fn measured_pooled(p: &Pooled, i: usize, label: &str) -> Vec<Layer> {
-    let bars = (p.x.iter().zip(&p.density)).map(|(x, s)| bar(*x, s));
+    let bars = (p.x.iter().zip(&p.density))
+        .map(|(x, s)| bar(*x, s))
+        .collect();
     let paint = colour(i).faded(0.6);
     let markers = markers(means(p), colour(i), Some(label.into()));
-    vec![Layer::ErrorBars { bars: bars.collect(), paint }, markers]
+    vec![Layer::ErrorBars { bars, paint }, markers]
 }
 
 /// `f` over [lo, hi], two pixels wide in the `i`th colour.
-fn curve(f: impl Fn(f64) -> f64, (lo, hi): (f64, f64), i: usize, dashed: bool, label: &str) -> Layer {
-    polyline(sampled(lo, hi, 400, f), colour(i), 2, dashed, Some(label.into()))
+fn curve(f: impl Fn(f64) -> f64, span: (f64, f64), i: usize, dashed: bool, label: &str) -> Layer {
+    let points = sampled(span.0, span.1, 400, f);
+    polyline(points, colour(i), 2, dashed, Some(label.into()))
 }
 
 /// The unit Gaussian, dashed.
@@ -106,20 +109,10 @@ pub fn velocity(
     let mut layers = Vec::new();
     let mut span = (0.0, 0.0);
     for (k, (suffix, label)) in suffixes.iter().enumerate() {
-        let p = pooled(
-            runs,
-            &|r| {
-                format!(
-                    "velocity_x{suffix}.{}",
-                    index(r).map_or(usize::MAX, |i| i.0)
-                )
-            },
-            &|r| {
-                let m = index(r).map_or(f64::NAN, |i| i.1);
-                let law = runs[r].0.velocity_law(m);
-                (law.centre, law.std())
-            },
-        )?;
+        let ball = |r| index(r).unwrap_or((usize::MAX, f64::NAN));
+        let name = |r| format!("velocity_x{suffix}.{}", ball(r).0);
+        let law = |r: usize| runs[r].0.velocity_law(ball(r).1);
+        let p = pooled(runs, &name, &|r| (law(r).centre, law(r).std()))?;
         span = range(&p);
         layers.extend(measured_pooled(&p, k, label));
     }
@@ -177,7 +170,7 @@ pub fn std_against_mass(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let mut layers = vec![polyline(theory, colour(6), 2, true, Some(label))];
     let label = "measured (Gaussian fit, mean ± standard error over replicas)";
     layers.extend(measured(bars, colour(0), label));
-    let labels = (title.into(), "mass m", "std of vₓ");
+    let labels = (title, "mass m", "std of vₓ");
     Some(chart(labels, (true, true), layers))
 }
 
@@ -234,9 +227,10 @@ pub fn speed(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let mass = e.balls.first().map_or(1.0, |b| b.mass);
     let exact = e.speed_law(mass);
     let mut layers = measured_pooled(&p, 0, MEASURED);
-    layers.push(curve(|u| mb.pdf(u), (0.0, hi), 6, true, "Maxwell-Boltzmann"));
+    let mb = curve(|u| mb.pdf(u), (0.0, hi), 6, true, "Maxwell-Boltzmann");
     let label = "exact, finite N";
-    layers.push(curve(|u| exact.pdf(u * kt) * kt, (0.0, hi), 1, false, label));
+    let exact = curve(|u| exact.pdf(u * kt) * kt, (0.0, hi), 1, false, label);
+    layers.extend([mb, exact]);
     Some(linear(
         title,
         "√m |v| / √(kT), kT = 2E/f",
@@ -293,7 +287,7 @@ fn mean_over(
 
 /// A chart with linear axes.
 fn linear(title: &str, x_label: &str, y_label: &str, layers: Vec<Layer>) -> ChartSpec {
-    chart((title.into(), x_label, y_label), (false, false), layers)
+    chart((title, x_label, y_label), (false, false), layers)
 }
 
 /// MacKay's scatter plots, from the first replica's stored samples: each
@@ -309,7 +303,8 @@ pub fn scatter(
     for (k, (x, y, label)) in sets.iter().enumerate() {
         let (x, y) = (out.series(x)?, out.series(y)?);
         let points = x.value.iter().copied().zip(y.value.iter().copied());
-        layers.push(markers(points.collect(), colour(k).faded(0.5), Some(label.clone())));
+        let paint = colour(k).faded(0.5);
+        layers.push(markers(points.collect(), paint, Some(label.clone())));
     }
     Some(linear(title, axes.0, axes.1, layers))
 }

@@ -53,7 +53,8 @@ pub fn scaled(gas: &[&Group], title: &str) -> ChartSpec {
         layers.push(at_p0(&|t| diffusive.left_fraction(t), DIFFUSIVE, label));
     }
     let title = format!("Left fraction during the expansion, {title}");
-    chart((title, "scaled time t p_max / m [σ]", LEFT), (false, false), layers)
+    let labels = (title, "scaled time t p_max / m [σ]", LEFT);
+    chart(labels, (false, false), layers)
 }
 
 /// One case's left fraction against time, with the collisionless curve.
@@ -96,7 +97,7 @@ pub fn tau_against_p(gases: &[(String, Vec<&Group>)]) -> ChartSpec {
         layers.push(polyline(free, colour(i).faded(0.6), 1, true, None));
     }
     let title = "Relaxation time against the largest initial momentum (dashed: collisionless)";
-    let labels = (title.into(), "p_max [√(m kT₀)]", "relaxation time τ [σ √(m/kT₀)]");
+    let labels = (title, "p_max [√(m kT₀)]", "relaxation time τ [σ √(m/kT₀)]");
     chart(labels, (true, true), layers)
 }
 
@@ -125,7 +126,7 @@ pub fn tau_against_knudsen(sweep: &[&Group], measured_d: Option<(f64, f64)>) -> 
         layers.push(markers(vec![point], colour(3), label));
     }
     let title = "Relaxation time over the crossing time L m / p_max, against Kn = λ / L";
-    let labels = (title.into(), "Knudsen number Kn = λ / L", "τ p_max / (m L)");
+    let labels = (title, "Knudsen number Kn = λ / L", "τ p_max / (m L)");
     chart(labels, (true, true), layers)
 }
 

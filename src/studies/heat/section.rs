@@ -11,8 +11,8 @@ use crate::stats::ensemble::Runs as AllRuns;
 use crate::stats::format::{num, pm};
 use crate::stats::point_runs::{PointRuns, by_point};
 use crate::stats::summary::{Stats, z_score};
-pub(super) use crate::studies::curves::{bar, figure, measured};
 use crate::studies::curves::polyline;
+pub(super) use crate::studies::curves::{bar, figure, measured};
 use crate::studies::options::value;
 
 pub(super) const INTRO: &str = include_str!("intro.md");

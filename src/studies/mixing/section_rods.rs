@@ -295,8 +295,8 @@ fn curves(points: &[Point], figures: &mut Vec<Figure>) -> String {
         t.first().copied().unwrap_or(0.0),
         t.last().copied().unwrap_or(1.0),
     ];
-    let label = Some("equilibrium 3/(N + 2)".into());
-    layers.push(polyline(ends.map(|t| (t, eq)).to_vec(), colour(6), 1, true, label));
+    let (level, label) = (ends.map(|t| (t, eq)), Some("equilibrium 3/(N + 2)".into()));
+    layers.push(polyline(level.to_vec(), colour(6), 1, true, label));
     let n = num(largest);
     let figure = figure(
         "mixing_concentration.svg",

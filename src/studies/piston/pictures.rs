@@ -6,10 +6,10 @@
 use super::cases::{self, First};
 use crate::model::chart::{Layer, Paint};
 use crate::model::report::Figure;
-use crate::studies::curves::{figure, polyline};
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
 use crate::stats::summary::Stats;
+use crate::studies::curves::{figure, polyline, show};
 use crate::theory::piston::Law;
 use crate::theory::piston_equilibrium::degrees_of_freedom;
 use std::f64::consts::TAU;
@@ -64,11 +64,10 @@ pub fn mackay_case(all: &[cases::Run], figures: &mut Vec<Figure>) -> anyhow::Res
     let mut md = fill(ANSWER, &values);
     let horizons = [40.0_f64.min(duration), duration];
     for horizon in horizons {
-        let name = spacetime(&first, &paths, horizon, figures);
-        let _ = writeln!(
-            md,
-            "![MacKay's case, first {horizon} time units: positions of all particles (time up; light gas blue, heavier gas green, piston purple) and the piston's path predicted by the adiabatic (black dashed) and isothermal (grey dashed) oscillators from the same start.]({name})\n"
+        let caption = format!(
+            "MacKay's case, first {horizon} time units: positions of all particles (time up; light gas blue, heavier gas green, piston purple) and the piston's path predicted by the adiabatic (black dashed) and isothermal (grey dashed) oscillators from the same start."
         );
+        md += &show(figures, spacetime(&first, &paths, horizon), &caption);
     }
     for horizon in horizons {
         let name = format!("mackay_energy_{horizon}.svg");
@@ -159,10 +158,7 @@ fn answer(
         ("r_ad", both(&ratios[0])),
         ("r_in", both(&ratios[1])),
         ("r_iso", both(&ratios[2])),
-        (
-            "r_st",
-            pm(measured.mean / start, measured.stderr / start),
-        ),
+        ("r_st", pm(measured.mean / start, measured.stderr / start)),
         (
             "dev",
             format!(
@@ -236,13 +232,8 @@ fn verdict(ad: &Stats, inertia: &Stats, iso: &Stats) -> String {
     }
 }
 
-/// MacKay's space-time diagram with the predicted piston paths; returns the file name.
-fn spacetime(
-    first: &First<1>,
-    paths: &[PredictedPath],
-    horizon: f64,
-    figures: &mut Vec<Figure>,
-) -> String {
+/// MacKay's space-time diagram with the predicted piston paths.
+fn spacetime(first: &First<1>, paths: &[PredictedPath], horizon: f64) -> Figure {
     let built = &first.built;
     let before = |(t, x): (&f64, &f64)| (*t <= horizon).then_some((*x, *t));
     let mut layers: Vec<Layer> = (0..built.particles.len())
@@ -250,20 +241,20 @@ fn spacetime(
             let s = first.out.series(&format!("x.{i}"))?;
             let species = &built.species[built.particles[i].species as usize];
             let points = s.t.iter().zip(&s.value).filter_map(before).collect();
+            let paint = Paint::solid(colour(species));
             let width = if species == "piston" { 3 } else { 1 };
-            Some(polyline(points, Paint::solid(colour(species)), width, false, None))
+            Some(polyline(points, paint, width, false, None))
         })
         .collect();
     for (path, rgb, label) in paths {
         let points = path.iter().map(|(t, x)| (t, x)).filter_map(before);
-        let label = Some(label.to_string());
-        layers.push(polyline(points.collect(), Paint::solid(*rgb), 2, true, label));
+        let (paint, label) = (Paint::solid(*rgb), Some(label.to_string()));
+        layers.push(polyline(points.collect(), paint, 2, true, label));
     }
     let name = format!("mackay_spacetime_{horizon}.svg");
     let title = format!("MacKay's piston: positions, first {horizon} time units");
     let labels = (title, "position x [σ]", "time t");
-    figures.push(figure(&name, labels, (false, false), layers));
-    name
+    figure(&name, labels, (false, false), layers)
 }
 
 /// Kinetic energy of each gas and the piston, with the oscillator energy
@@ -283,8 +274,8 @@ pub(super) fn energies<const D: usize>(
         .filter_map(|s| {
             let species = s.observable.strip_prefix("kinetic_energy.")?;
             let points = s.t.iter().zip(&s.value).filter_map(before).collect();
-            let label = Some(species.to_string());
-            Some(polyline(points, Paint::solid(colour(species)), 2, false, label))
+            let (paint, label) = (Paint::solid(colour(species)), Some(species.to_string()));
+            Some(polyline(points, paint, 2, false, label))
         })
         .collect();
     let oscillator = first.samples.t.iter().zip(&first.energy).filter_map(before);

@@ -47,7 +47,8 @@ pub fn z_chart(all: &[Point]) -> ChartSpec {
             (p.z.mean, p.error().0)
         }));
     }
-    let labels = ("Equation of state: Z = βP/ρ".into(), "packing fraction η", "Z = βP/ρ");
+    let title = "Equation of state: Z = βP/ρ";
+    let labels = (title, "packing fraction η", "Z = βP/ρ");
     chart(labels, (false, true), layers)
 }
 
@@ -83,7 +84,7 @@ pub fn deviation_chart(all: &[Point]) -> Option<ChartSpec> {
         return None;
     }
     let title = "Z over the reference equation, minus 1 (fluid points, finite N)";
-    let labels = (title.into(), "packing fraction η", "Z / Z_reference − 1");
+    let labels = (title, "packing fraction η", "Z / Z_reference − 1");
     Some(chart(labels, (false, false), layers))
 }
 
@@ -96,15 +97,11 @@ pub fn time_chart(examples: &[(&Point, &str)]) -> ChartSpec {
         };
         let mean = v.iter().sum::<f64>() / v.len() as f64;
         let points = t.iter().zip(v).map(|(t, v)| (*t, v / mean)).collect();
-        layers.push(thin(
-            points,
-            colour(i).faded(0.7),
-            false,
-            Some(label.to_string()),
-        ));
+        let (paint, label) = (colour(i).faded(0.7), Some(label.to_string()));
+        layers.push(thin(points, paint, false, label));
     }
     let title = "Pressure against time (one replica each, per sampling interval)";
-    let labels = (title.into(), "time t (σ√(m/kT))", "P(t) / mean P");
+    let labels = (title, "time t (σ√(m/kT))", "P(t) / mean P");
     chart(labels, (false, false), layers)
 }
 
@@ -120,12 +117,10 @@ pub fn finite_size_chart(fits: &[Fit]) -> ChartSpec {
         // The points at 1/N, and the extrapolation at 0.
         let bars = f.data.iter().map(|&(n, z, e)| (1.0 / n as f64, z, e));
         let bars = bars.chain([(0.0, f.z_inf, f.z_inf_err)]);
-        layers.push(Layer::ErrorBars {
-            bars: bars
-                .map(|(x, z, e)| (x, rel(z - e), rel(z), rel(z + e)))
-                .collect(),
-            paint,
-        });
+        let bars = bars
+            .map(|(x, z, e)| (x, rel(z - e), rel(z), rel(z + e)))
+            .collect();
+        layers.push(Layer::ErrorBars { bars, paint });
         let points = f.data.iter().map(|&(n, z, _)| (1.0 / n as f64, rel(z)));
         let label = format!("{}D, η = {:.3}", f.dimension, f.eta);
         layers.push(markers(points.collect(), paint, Some(label)));
@@ -133,7 +128,8 @@ pub fn finite_size_chart(fits: &[Fit]) -> ChartSpec {
     let zero = vec![(0.0, 0.0), (1.0 / 64.0, 0.0)];
     layers.push(thin(zero, BLACK, true, Some("reference equation".into())));
     let title = "Finite size: Z against 1/N, extrapolated to N → ∞ (at 1/N = 0)";
-    chart((title.into(), "1/N", "Z / Z_reference − 1"), (false, false), layers)
+    let labels = (title, "1/N", "Z / Z_reference − 1");
+    chart(labels, (false, false), layers)
 }
 
 /// βPσ² = Z ρ of the dense disks of one size, with the fluid's equation as
@@ -157,7 +153,8 @@ pub fn dense_disks_chart(pts: &[&Point]) -> ChartSpec {
     }));
     let n = pts.first().map_or(0, |p| p.particles);
     let title = format!("Disks near the liquid-hexatic transition, N = {n}");
-    chart((title, "packing fraction η", "βPσ²"), (false, false), layers)
+    let labels = (title, "packing fraction η", "βPσ²");
+    chart(labels, (false, false), layers)
 }
 
 const BLACK: Paint = Paint {
@@ -171,7 +168,12 @@ fn thin(points: Vec<(f64, f64)>, paint: Paint, dashed: bool, label: Option<Strin
 }
 
 /// The points at their η: `y` gives each one's value and error.
-fn at_eta(pts: &[&Point], paint: Paint, label: &str, y: impl Fn(&Point) -> (f64, f64)) -> [Layer; 2] {
+fn at_eta(
+    pts: &[&Point],
+    paint: Paint,
+    label: &str,
+    y: impl Fn(&Point) -> (f64, f64),
+) -> [Layer; 2] {
     let bars = pts.iter().map(|p| {
         let (m, e) = y(p);
         (p.eta, m - e, m, m + e)
