@@ -16,6 +16,9 @@ pub type Runs<'a> = [(&'a Ensemble, &'a RunOutput)];
 /// The label of a pooled histogram's markers.
 pub const MEASURED: &str = "measured (mean ± standard error over replicas)";
 
+/// The y axis of the charts of pooled histograms.
+const DENSITY: &str = "probability density";
+
 fn find<'a>(out: &'a RunOutput, name: &str) -> Option<&'a Histogram> {
     out.histograms.iter().find(|h| h.observable == name)
 }
@@ -38,20 +41,14 @@ pub fn pooled(
     for r in 0..runs.len() {
         let h = find(runs[r].1, &name(r))?;
         let (shift, unit) = scale(r);
-        let f = fractions(&h.count);
+        let bins = h.lo.iter().zip(&h.hi);
+        let centre = |(a, b): (&f64, &f64)| (0.5 * (a + b) - shift) / unit;
+        let width = |(a, b): (&f64, &f64)| (b - a) / unit;
         if x.is_empty() {
-            x =
-                h.lo.iter()
-                    .zip(&h.hi)
-                    .map(|(a, b)| (0.5 * (a + b) - shift) / unit)
-                    .collect();
+            x = bins.clone().map(centre).collect();
         }
-        per.push(
-            f.iter()
-                .zip(h.lo.iter().zip(&h.hi))
-                .map(|(f, (a, b))| f / ((b - a) / unit))
-                .collect(),
-        );
+        let f = fractions(&h.count);
+        per.push(f.iter().zip(bins).map(|(f, bin)| f / width(bin)).collect());
     }
     let density = (0..x.len())
         .map(|b| Stats::of(&per.iter().map(|p| p[b]).collect::<Vec<f64>>()))
@@ -124,12 +121,8 @@ pub fn velocity(
     let label = format!("exact, f = {dof}");
     layers.push(curve(|u| law.pdf(u), span, 6, false, &label));
     layers.push(gaussian(span));
-    Some(linear(
-        title,
-        "(vₓ − V) / √(kT/m)  (V, kT/m: the exact law's centre and variance)",
-        "probability density",
-        layers,
-    ))
+    let x_label = "(vₓ − V) / √(kT/m)  (V, kT/m: the exact law's centre and variance)";
+    Some(linear(title, x_label, DENSITY, layers))
 }
 
 /// Each particle's velocity std (Gaussian fit, mean over replicas) against
@@ -179,9 +172,8 @@ pub fn positions(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let laws = runs.first()?.0.rod_laws()?;
     let mut layers = Vec::new();
     for (k, (ball, law)) in laws.iter().enumerate() {
-        let p = pooled(runs, &|_| format!("position_x.{}", ball.index), &|_| {
-            (0.0, 1.0)
-        })?;
+        let name = |_| format!("position_x.{}", ball.index);
+        let p = pooled(runs, &name, &|_| (0.0, 1.0))?;
         let label = (k == 0).then(|| "measured (mean over replicas)".into());
         layers.push(markers(means(&p), colour(k), label));
         let label = (k == 0).then(|| "order statistics (exact)".into());
@@ -189,35 +181,22 @@ pub fn positions(title: &str, runs: &Runs) -> Option<ChartSpec> {
         let points = sampled(lo, hi, 400, |x| law.pdf(x));
         layers.push(polyline(points, colour(k), 2, false, label));
     }
-    Some(linear(
-        title,
-        "x [σ]",
-        "probability density of each rod's x",
-        layers,
-    ))
+    let y_label = format!("{DENSITY} of each rod's x");
+    Some(linear(title, "x [σ]", &y_label, layers))
 }
 
 /// sqrt(m) v_x of all particles in units of sqrt(kT), beside the Gaussian.
 pub fn scaled_vx(title: &str, runs: &Runs) -> Option<ChartSpec> {
-    let p = pooled(runs, &|_| "scaled_velocity_x".into(), &|r| {
-        (0.0, runs[r].0.kt().sqrt())
-    })?;
+    let p = pooled(runs, &|_| "scaled_velocity_x".into(), &|r| in_kt(runs, r))?;
     let mut layers = measured_pooled(&p, 0, MEASURED);
     layers.push(gaussian(range(&p)));
-    Some(linear(
-        title,
-        "√m vₓ / √(kT), kT = 2E/f",
-        "probability density",
-        layers,
-    ))
+    Some(linear(title, "√m vₓ / √(kT), kT = 2E/f", DENSITY, layers))
 }
 
 /// sqrt(m)|v| in units of sqrt(kT), beside Maxwell-Boltzmann and the exact law.
 pub fn speed(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let e = runs.first()?.0;
-    let p = pooled(runs, &|_| "scaled_speed".into(), &|r| {
-        (0.0, runs[r].0.kt().sqrt())
-    })?;
+    let p = pooled(runs, &|_| "scaled_speed".into(), &|r| in_kt(runs, r))?;
     let (_, hi) = range(&p);
     let mb = MaxwellSpeed {
         kt: 1.0,
@@ -231,12 +210,12 @@ pub fn speed(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let label = "exact, finite N";
     let exact = curve(|u| exact.pdf(u * kt) * kt, (0.0, hi), 1, false, label);
     layers.extend([mb, exact]);
-    Some(linear(
-        title,
-        "√m |v| / √(kT), kT = 2E/f",
-        "probability density",
-        layers,
-    ))
+    Some(linear(title, "√m |v| / √(kT), kT = 2E/f", DENSITY, layers))
+}
+
+/// The scale of replica `r`'s √m v histograms: units of √(kT), no shift.
+fn in_kt(runs: &Runs, r: usize) -> (f64, f64) {
+    (0.0, runs[r].0.kt().sqrt())
 }
 
 /// The density along x over the mean density (mean over replicas).
@@ -246,12 +225,8 @@ pub fn density(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let (points, n) = mean_over(runs, "density_x", &|h| profile(e, h), f64::INFINITY)?;
     let points = points.into_iter().map(|(x, y)| (x, y / mean_n)).collect();
     let label = format!("mean over {n} replicas");
-    Some(linear(
-        title,
-        "x [σ]",
-        "n(x) / mean n",
-        vec![polyline(points, colour(0), 2, false, Some(label))],
-    ))
+    let layers = vec![polyline(points, colour(0), 2, false, Some(label))];
+    Some(linear(title, "x [σ]", "n(x) / mean n", layers))
 }
 
 /// g(r), mean over replicas, up to `reach` σ.

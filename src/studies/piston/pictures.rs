@@ -109,11 +109,11 @@ fn answer(
     let tau = stat("relaxation_time");
     let speed = stat("speed_ratio").mean;
     let harmonic = 100.0 * (small / ad - 1.0);
+    let share = 100.0 * stat("initial_piston_share").mean;
+    let measured_period = period(measured.mean);
+    let period_error = measured.stderr * measured_period / measured.mean;
     vec![
-        (
-            "share",
-            format!("{:.0}", 100.0 * stat("initial_piston_share").mean),
-        ),
+        ("share", format!("{share:.0}")),
         ("mass", num(mass)),
         ("free", free.to_string()),
         ("equipartition", format!("{:.0}", 100.0 / free as f64)),
@@ -148,13 +148,7 @@ fn answer(
         ("piso", num(period(iso))),
         ("n", measured.n.to_string()),
         ("meas", both(&measured)),
-        (
-            "pmeas",
-            pm(
-                period(measured.mean),
-                measured.stderr * period(measured.mean) / measured.mean,
-            ),
-        ),
+        ("pmeas", pm(measured_period, period_error)),
         ("r_ad", both(&ratios[0])),
         ("r_in", both(&ratios[1])),
         ("r_iso", both(&ratios[2])),
