@@ -38,6 +38,7 @@ pub fn polyline(
     }
 }
 
+/// Filled circles at `points`.
 pub fn markers(points: Vec<(f64, f64)>, paint: Paint, label: Option<String>) -> Layer {
     Layer::Markers {
         points,
