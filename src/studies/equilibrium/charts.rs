@@ -8,13 +8,16 @@ use crate::model::chart::{ChartSpec, Layer, colour};
 use crate::model::run_output::{Histogram, RunOutput};
 use crate::stats::replicas::fractions;
 use crate::stats::summary::Stats;
-use crate::studies::curves::mean_with_band;
+use crate::studies::curves::{bar, chart, markers, mean_with_band, measured, polyline, sampled};
 use crate::theory::maxwell::{MaxwellSpeed, normal_pdf};
 
 pub type Runs<'a> = [(&'a Ensemble, &'a RunOutput)];
 
 /// The label of a pooled histogram's markers.
 pub const MEASURED: &str = "measured (mean ± standard error over replicas)";
+
+/// The y axis of the charts of pooled histograms.
+const DENSITY: &str = "probability density";
 
 fn find<'a>(out: &'a RunOutput, name: &str) -> Option<&'a Histogram> {
     out.histograms.iter().find(|h| h.observable == name)
@@ -38,20 +41,14 @@ pub fn pooled(
     for r in 0..runs.len() {
         let h = find(runs[r].1, &name(r))?;
         let (shift, unit) = scale(r);
-        let f = fractions(&h.count);
+        let bins = h.lo.iter().zip(&h.hi);
+        let centre = |(a, b): (&f64, &f64)| (0.5 * (a + b) - shift) / unit;
+        let width = |(a, b): (&f64, &f64)| (b - a) / unit;
         if x.is_empty() {
-            x =
-                h.lo.iter()
-                    .zip(&h.hi)
-                    .map(|(a, b)| (0.5 * (a + b) - shift) / unit)
-                    .collect();
+            x = bins.clone().map(centre).collect();
         }
-        per.push(
-            f.iter()
-                .zip(h.lo.iter().zip(&h.hi))
-                .map(|(f, (a, b))| f / ((b - a) / unit))
-                .collect(),
-        );
+        let f = fractions(&h.count);
+        per.push(f.iter().zip(bins).map(|(f, bin)| f / width(bin)).collect());
     }
     let density = (0..x.len())
         .map(|b| Stats::of(&per.iter().map(|p| p[b]).collect::<Vec<f64>>()))
@@ -66,53 +63,25 @@ fn means(p: &Pooled) -> Vec<(f64, f64)> {
         .collect()
 }
 
-fn measured(p: &Pooled, i: usize, label: &str) -> Vec<Layer> {
+/// A pooled histogram: markers at its means over fainter error bars.
+fn measured_pooled(p: &Pooled, i: usize, label: &str) -> Vec<Layer> {
     let bars = (p.x.iter().zip(&p.density))
-        .map(|(x, s)| (*x, s.mean - s.stderr, s.mean, s.mean + s.stderr))
+        .map(|(x, s)| bar(*x, s))
         .collect();
-    vec![
-        Layer::ErrorBars {
-            bars,
-            paint: colour(i).faded(0.6),
-        },
-        Layer::Markers {
-            points: means(p),
-            paint: colour(i),
-            label: Some(label.into()),
-        },
-    ]
+    let paint = colour(i).faded(0.6);
+    let markers = markers(means(p), colour(i), Some(label.into()));
+    vec![Layer::ErrorBars { bars, paint }, markers]
 }
 
-fn curve(
-    f: &dyn Fn(f64) -> f64,
-    lo: f64,
-    hi: f64,
-    i: usize,
-    dashed: bool,
-    label: Option<&str>,
-) -> Layer {
-    Layer::Line {
-        points: (0..=400)
-            .map(|k| lo + (hi - lo) * k as f64 / 400.0)
-            .map(|x| (x, f(x)))
-            .collect(),
-        paint: colour(i),
-        width: 2,
-        dashed,
-        label: label.map(Into::into),
-    }
+/// `f` over [lo, hi], two pixels wide in the `i`th colour.
+fn curve(f: impl Fn(f64) -> f64, span: (f64, f64), i: usize, dashed: bool, label: &str) -> Layer {
+    let points = sampled(span.0, span.1, 400, f);
+    polyline(points, colour(i), 2, dashed, Some(label.into()))
 }
 
 /// The unit Gaussian, dashed.
-fn gaussian(lo: f64, hi: f64) -> Layer {
-    curve(
-        &|u| normal_pdf(u, 0.0, 1.0),
-        lo,
-        hi,
-        6,
-        true,
-        Some("Gaussian"),
-    )
+fn gaussian(span: (f64, f64)) -> Layer {
+    curve(|u| normal_pdf(u, 0.0, 1.0), span, 6, true, "Gaussian")
 }
 
 fn range(p: &Pooled) -> (f64, f64) {
@@ -137,22 +106,12 @@ pub fn velocity(
     let mut layers = Vec::new();
     let mut span = (0.0, 0.0);
     for (k, (suffix, label)) in suffixes.iter().enumerate() {
-        let p = pooled(
-            runs,
-            &|r| {
-                format!(
-                    "velocity_x{suffix}.{}",
-                    index(r).map_or(usize::MAX, |i| i.0)
-                )
-            },
-            &|r| {
-                let m = index(r).map_or(f64::NAN, |i| i.1);
-                let law = runs[r].0.velocity_law(m);
-                (law.centre, law.std())
-            },
-        )?;
+        let ball = |r| index(r).unwrap_or((usize::MAX, f64::NAN));
+        let name = |r| format!("velocity_x{suffix}.{}", ball(r).0);
+        let law = |r: usize| runs[r].0.velocity_law(ball(r).1);
+        let p = pooled(runs, &name, &|r| (law(r).centre, law(r).std()))?;
         span = range(&p);
-        layers.extend(measured(&p, k, label));
+        layers.extend(measured_pooled(&p, k, label));
     }
     let law = crate::theory::microcanonical::VelocityMarginal {
         centre: 0.0,
@@ -160,21 +119,10 @@ pub fn velocity(
         dof,
     };
     let label = format!("exact, f = {dof}");
-    layers.push(curve(
-        &|u| law.pdf(u),
-        span.0,
-        span.1,
-        6,
-        false,
-        Some(&label),
-    ));
-    layers.push(gaussian(span.0, span.1));
-    Some(linear(
-        title,
-        "(vₓ − V) / √(kT/m)  (V, kT/m: the exact law's centre and variance)",
-        "probability density",
-        layers,
-    ))
+    layers.push(curve(|u| law.pdf(u), span, 6, false, &label));
+    layers.push(gaussian(span));
+    let x_label = "(vₓ − V) / √(kT/m)  (V, kT/m: the exact law's centre and variance)";
+    Some(linear(title, x_label, DENSITY, layers))
 }
 
 /// Each particle's velocity std (Gaussian fit, mean over replicas) against
@@ -183,7 +131,6 @@ pub fn velocity(
 pub fn std_against_mass(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let first = runs.first()?.0;
     let mut bars = Vec::new();
-    let mut points = Vec::new();
     let mut theory = Vec::new();
     for ball in first.by_rank() {
         let i = ball.index;
@@ -205,39 +152,19 @@ pub fn std_against_mass(title: &str, runs: &Runs) -> Option<ChartSpec> {
         if s.n == 0 {
             continue;
         }
-        bars.push((m.mean, s.mean - s.stderr, s.mean, s.mean + s.stderr));
-        points.push((m.mean, s.mean));
+        bars.push(bar(m.mean, &s));
         theory.push((m.mean, x.mean));
     }
     theory.sort_by(|a, b| a.0.total_cmp(&b.0));
-    if points.is_empty() {
+    if bars.is_empty() {
         return None;
     }
-    Some(ChartSpec {
-        title: title.into(),
-        x_label: "mass m".into(),
-        y_label: "std of vₓ".into(),
-        x_log: true,
-        y_log: true,
-        layers: vec![
-            Layer::Line {
-                points: theory,
-                paint: colour(6),
-                width: 2,
-                dashed: true,
-                label: Some("exact: √(kT/m), kT = 2E/f".into()),
-            },
-            Layer::ErrorBars {
-                bars,
-                paint: colour(0),
-            },
-            Layer::Markers {
-                points,
-                paint: colour(0),
-                label: Some("measured (Gaussian fit, mean ± standard error over replicas)".into()),
-            },
-        ],
-    })
+    let label = "exact: √(kT/m), kT = 2E/f".to_string();
+    let mut layers = vec![polyline(theory, colour(6), 2, true, Some(label))];
+    let label = "measured (Gaussian fit, mean ± standard error over replicas)";
+    layers.extend(measured(bars, colour(0), label));
+    let labels = (title, "mass m", "std of vₓ");
+    Some(chart(labels, (true, true), layers))
 }
 
 /// Every rod's position histogram (pooled) beside its order-statistics law.
@@ -245,48 +172,31 @@ pub fn positions(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let laws = runs.first()?.0.rod_laws()?;
     let mut layers = Vec::new();
     for (k, (ball, law)) in laws.iter().enumerate() {
-        let p = pooled(runs, &|_| format!("position_x.{}", ball.index), &|_| {
-            (0.0, 1.0)
-        })?;
+        let name = |_| format!("position_x.{}", ball.index);
+        let p = pooled(runs, &name, &|_| (0.0, 1.0))?;
+        let label = (k == 0).then(|| "measured (mean over replicas)".into());
+        layers.push(markers(means(&p), colour(k), label));
+        let label = (k == 0).then(|| "order statistics (exact)".into());
         let (lo, hi) = range(&p);
-        layers.push(Layer::Markers {
-            points: means(&p),
-            paint: colour(k),
-            label: (k == 0).then(|| "measured (mean over replicas)".into()),
-        });
-        let label = (k == 0).then_some("order statistics (exact)");
-        layers.push(curve(&|x| law.pdf(x), lo, hi, k, false, label));
+        let points = sampled(lo, hi, 400, |x| law.pdf(x));
+        layers.push(polyline(points, colour(k), 2, false, label));
     }
-    Some(linear(
-        title,
-        "x [σ]",
-        "probability density of each rod's x",
-        layers,
-    ))
+    let y_label = format!("{DENSITY} of each rod's x");
+    Some(linear(title, "x [σ]", &y_label, layers))
 }
 
 /// sqrt(m) v_x of all particles in units of sqrt(kT), beside the Gaussian.
 pub fn scaled_vx(title: &str, runs: &Runs) -> Option<ChartSpec> {
-    let p = pooled(runs, &|_| "scaled_velocity_x".into(), &|r| {
-        (0.0, runs[r].0.kt().sqrt())
-    })?;
-    let (lo, hi) = range(&p);
-    let mut layers = measured(&p, 0, MEASURED);
-    layers.push(gaussian(lo, hi));
-    Some(linear(
-        title,
-        "√m vₓ / √(kT), kT = 2E/f",
-        "probability density",
-        layers,
-    ))
+    let p = pooled(runs, &|_| "scaled_velocity_x".into(), &|r| in_kt(runs, r))?;
+    let mut layers = measured_pooled(&p, 0, MEASURED);
+    layers.push(gaussian(range(&p)));
+    Some(linear(title, "√m vₓ / √(kT), kT = 2E/f", DENSITY, layers))
 }
 
 /// sqrt(m)|v| in units of sqrt(kT), beside Maxwell-Boltzmann and the exact law.
 pub fn speed(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let e = runs.first()?.0;
-    let p = pooled(runs, &|_| "scaled_speed".into(), &|r| {
-        (0.0, runs[r].0.kt().sqrt())
-    })?;
+    let p = pooled(runs, &|_| "scaled_speed".into(), &|r| in_kt(runs, r))?;
     let (_, hi) = range(&p);
     let mb = MaxwellSpeed {
         kt: 1.0,
@@ -295,17 +205,17 @@ pub fn speed(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let kt = e.kt().sqrt();
     let mass = e.balls.first().map_or(1.0, |b| b.mass);
     let exact = e.speed_law(mass);
-    let mut layers = measured(&p, 0, MEASURED);
-    let label = Some("Maxwell-Boltzmann");
-    layers.push(curve(&|u| mb.pdf(u), 0.0, hi, 6, true, label));
-    let label = Some("exact, finite N");
-    layers.push(curve(&|u| exact.pdf(u * kt) * kt, 0.0, hi, 1, false, label));
-    Some(linear(
-        title,
-        "√m |v| / √(kT), kT = 2E/f",
-        "probability density",
-        layers,
-    ))
+    let mut layers = measured_pooled(&p, 0, MEASURED);
+    let mb = curve(|u| mb.pdf(u), (0.0, hi), 6, true, "Maxwell-Boltzmann");
+    let label = "exact, finite N";
+    let exact = curve(|u| exact.pdf(u * kt) * kt, (0.0, hi), 1, false, label);
+    layers.extend([mb, exact]);
+    Some(linear(title, "√m |v| / √(kT), kT = 2E/f", DENSITY, layers))
+}
+
+/// The scale of replica `r`'s √m v histograms: units of √(kT), no shift.
+fn in_kt(runs: &Runs, r: usize) -> (f64, f64) {
+    (0.0, runs[r].0.kt().sqrt())
 }
 
 /// The density along x over the mean density (mean over replicas).
@@ -315,12 +225,8 @@ pub fn density(title: &str, runs: &Runs) -> Option<ChartSpec> {
     let (points, n) = mean_over(runs, "density_x", &|h| profile(e, h), f64::INFINITY)?;
     let points = points.into_iter().map(|(x, y)| (x, y / mean_n)).collect();
     let label = format!("mean over {n} replicas");
-    Some(linear(
-        title,
-        "x [σ]",
-        "n(x) / mean n",
-        vec![plain(points, label)],
-    ))
+    let layers = vec![polyline(points, colour(0), 2, false, Some(label))];
+    Some(linear(title, "x [σ]", "n(x) / mean n", layers))
 }
 
 /// g(r), mean over replicas, up to `reach` σ.
@@ -329,7 +235,8 @@ pub fn radial(title: &str, runs: &Runs, reach: f64) -> Option<ChartSpec> {
     let g = |h: &Histogram| radial_distribution(e, h);
     let (points, n) = mean_over(runs, "pair_distance", &g, reach)?;
     let label = format!("mean over {n} replicas (N(N − 1) normalisation)");
-    Some(linear(title, "r [σ]", "g(r)", vec![plain(points, label)]))
+    let layers = vec![polyline(points, colour(0), 2, false, Some(label))];
+    Some(linear(title, "r [σ]", "g(r)", layers))
 }
 
 /// The mean over the replicas that have histogram `name` of `per` of it,
@@ -353,27 +260,9 @@ fn mean_over(
     Some((points, per.len()))
 }
 
-/// A solid line of width 2 in the first colour.
-fn plain(points: Vec<(f64, f64)>, label: String) -> Layer {
-    Layer::Line {
-        points,
-        paint: colour(0),
-        width: 2,
-        dashed: false,
-        label: Some(label),
-    }
-}
-
 /// A chart with linear axes.
 fn linear(title: &str, x_label: &str, y_label: &str, layers: Vec<Layer>) -> ChartSpec {
-    ChartSpec {
-        title: title.into(),
-        x_label: x_label.into(),
-        y_label: y_label.into(),
-        x_log: false,
-        y_log: false,
-        layers,
-    }
+    chart((title, x_label, y_label), (false, false), layers)
 }
 
 /// MacKay's scatter plots, from the first replica's stored samples: each
@@ -388,16 +277,9 @@ pub fn scatter(
     let mut layers = Vec::new();
     for (k, (x, y, label)) in sets.iter().enumerate() {
         let (x, y) = (out.series(x)?, out.series(y)?);
-        layers.push(Layer::Markers {
-            points: x
-                .value
-                .iter()
-                .copied()
-                .zip(y.value.iter().copied())
-                .collect(),
-            paint: colour(k).faded(0.5),
-            label: Some(label.clone()),
-        });
+        let points = x.value.iter().copied().zip(y.value.iter().copied());
+        let paint = colour(k).faded(0.5);
+        layers.push(markers(points.collect(), paint, Some(label.clone())));
     }
     Some(linear(title, axes.0, axes.1, layers))
 }
@@ -414,13 +296,8 @@ pub fn settling(
     let label = "mean over replicas (band: ± standard error)".to_string();
     let mut layers = mean_with_band(t, mean, colour(0), label).to_vec();
     if let (Some((level, label)), Some(t0), Some(t1)) = (reference, t.first(), t.last()) {
-        layers.push(Layer::Line {
-            points: vec![(*t0, level), (*t1, level)],
-            paint: colour(6),
-            width: 2,
-            dashed: true,
-            label: Some(label.into()),
-        });
+        let points = vec![(*t0, level), (*t1, level)];
+        layers.push(polyline(points, colour(6), 2, true, Some(label.into())));
     }
     linear(title, "time t", y_label, layers)
 }

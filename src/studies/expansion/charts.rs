@@ -2,7 +2,7 @@
 
 use super::group::Group;
 use crate::model::chart::{ChartSpec, Layer, Paint, colour};
-use crate::studies::curves::mean_with_band;
+use crate::studies::curves::{self, bar, chart, markers, mean_with_band, polyline, sampled};
 
 /// The charts show the first this many collisionless relaxation times (the
 /// expansion and, in a fluid, its sloshing); the rest is noise about 1/2.
@@ -35,31 +35,26 @@ pub fn scaled(gas: &[&Group], title: &str) -> ChartSpec {
         let label = format!("{} (mean ± standard error)", g.start_text());
         layers.extend(mean_with_band(&x, &g.mean[..n], colour(i), label));
     }
-    let grid: Vec<f64> = (0..=400).map(|i| span * i as f64 / 400.0).collect();
     // The theories at p0, drawn against t p0 / m.
-    let at = |t: f64| t * mass / p0;
+    let at_p0 = |f: &dyn Fn(f64) -> f64, paint, label: &str| {
+        theory(sampled(0.0, span, 400, |x| f(x * mass / p0)), paint, label)
+    };
     if let Some(free) = first.free() {
-        let f = |x| free.left_fraction(at(x));
-        layers.push(theory(&grid, f, FREE, "collisionless"));
+        layers.push(at_p0(&|t| free.left_fraction(t), FREE, "collisionless"));
     }
     if let Some(thermal) = first.free_thermal() {
-        let f = |x| thermal.left_fraction(at(x));
         let label = "collisionless, Maxwellian at the same kT";
-        layers.push(theory(&grid, f, THERMAL, label));
+        layers.push(at_p0(&|t| thermal.left_fraction(t), THERMAL, label));
     }
     let d = first.stat("diffusion_enskog").mean;
     if let (Some(g), true) = (&first.gas, d.is_finite()) {
         let diffusive = g.diffusive(d);
-        let f = |x| diffusive.left_fraction(at(x));
-        layers.push(theory(&grid, f, DIFFUSIVE, "diffusive (Enskog D)"));
+        let label = "diffusive (Enskog D)";
+        layers.push(at_p0(&|t| diffusive.left_fraction(t), DIFFUSIVE, label));
     }
-    ChartSpec {
-        title: format!("Left fraction during the expansion, {title}"),
-        x_label: "scaled time t p_max / m [σ]".into(),
-        y_label: LEFT.into(),
-        layers,
-        ..Default::default()
-    }
+    let title = format!("Left fraction during the expansion, {title}");
+    let labels = (title, "scaled time t p_max / m [σ]", LEFT);
+    chart(labels, (false, false), layers)
 }
 
 /// One case's left fraction against time, with the collisionless curve.
@@ -74,38 +69,21 @@ pub fn single(g: &Group) -> ChartSpec {
     let label = "measured (mean ± standard error)".to_string();
     let mut layers = mean_with_band(&g.t[..n], &g.mean[..n], colour(0), label).to_vec();
     if let Some(free) = g.free() {
-        let f = |t| free.left_fraction(t);
-        layers.push(theory(&g.t[..n], f, FREE, "collisionless"));
+        let points = g.t[..n].iter().map(|&t| (t, free.left_fraction(t)));
+        layers.push(theory(points.collect(), FREE, "collisionless"));
     }
-    ChartSpec {
-        title: format!("Left fraction during the expansion, {}", g.label()),
-        x_label: "time t [σ √(m/kT)]".into(),
-        y_label: LEFT.into(),
-        layers,
-        ..Default::default()
-    }
+    let title = format!("Left fraction during the expansion, {}", g.label());
+    chart((title, "time t [σ √(m/kT)]", LEFT), (false, false), layers)
 }
 
 /// The measured relaxation times of groups at x, times a scale, as error
 /// bars and markers.
 fn measured(groups: &[(f64, &Group, f64)], paint: Paint, label: &str) -> [Layer; 2] {
-    let tau = |g: &Group| g.stat("relaxation_time");
-    let bar = |&(x, g, scale): &(f64, &Group, f64)| {
-        let t = tau(g);
-        let (low, high) = (t.mean - t.stderr, t.mean + t.stderr);
-        (x, low * scale, t.mean * scale, high * scale)
-    };
-    [
-        Layer::ErrorBars {
-            bars: groups.iter().map(bar).collect(),
-            paint,
-        },
-        Layer::Markers {
-            points: (groups.iter().map(|&(x, g, scale)| (x, tau(g).mean * scale))).collect(),
-            paint,
-            label: Some(label.into()),
-        },
-    ]
+    let bars = groups.iter().map(|&(x, g, scale)| {
+        let (_, low, t, high) = bar(x, &g.stat("relaxation_time"));
+        (x, low * scale, t * scale, high * scale)
+    });
+    curves::measured(bars, paint, label)
 }
 
 /// Relaxation time against p_max, log-log, one colour per gas (N,
@@ -115,23 +93,12 @@ pub fn tau_against_p(gases: &[(String, Vec<&Group>)]) -> ChartSpec {
     for (i, (label, gs)) in gases.iter().enumerate() {
         let at: Vec<(f64, &Group, f64)> = gs.iter().map(|g| (g.p_max(), *g, 1.0)).collect();
         layers.extend(measured(&at, colour(i), label));
-        layers.push(Layer::Line {
-            points: gs.iter().map(|g| (g.p_max(), g.tau_free())).collect(),
-            paint: colour(i).faded(0.6),
-            width: 1,
-            dashed: true,
-            label: None,
-        });
+        let free = gs.iter().map(|g| (g.p_max(), g.tau_free())).collect();
+        layers.push(polyline(free, colour(i).faded(0.6), 1, true, None));
     }
-    ChartSpec {
-        title: "Relaxation time against the largest initial momentum (dashed: collisionless)"
-            .into(),
-        x_label: "p_max [√(m kT₀)]".into(),
-        y_label: "relaxation time τ [σ √(m/kT₀)]".into(),
-        x_log: true,
-        y_log: true,
-        layers,
-    }
+    let title = "Relaxation time against the largest initial momentum (dashed: collisionless)";
+    let labels = (title, "p_max [√(m kT₀)]", "relaxation time τ [σ √(m/kT₀)]");
+    chart(labels, (true, true), layers)
 }
 
 /// The relaxation time in units of the box crossing time L m / p_max
@@ -151,38 +118,19 @@ pub fn tau_against_knudsen(sweep: &[&Group], measured_d: Option<(f64, f64)>) -> 
     free.sort_by(|a, b| a.0.total_cmp(&b.0));
     diffusive.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut layers = measured(&at, colour(0), "measured (every sweep point)").to_vec();
-    layers.push(Layer::Line {
-        points: free,
-        paint: colour(FREE),
-        width: 2,
-        dashed: true,
-        label: Some("collisionless".into()),
-    });
-    let markers = |points, paint, label: &str| Layer::Markers {
-        points,
-        paint: colour(paint),
-        label: Some(label.into()),
-    };
-    layers.push(markers(diffusive, DIFFUSIVE, "diffusive, Enskog D"));
+    layers.push(theory(free, FREE, "collisionless"));
+    let label = Some("diffusive, Enskog D".into());
+    layers.push(markers(diffusive, colour(DIFFUSIVE), label));
     if let Some(point) = measured_d {
-        layers.push(markers(vec![point], 3, "diffusive, measured D"));
+        let label = Some("diffusive, measured D".into());
+        layers.push(markers(vec![point], colour(3), label));
     }
-    ChartSpec {
-        title: "Relaxation time over the crossing time L m / p_max, against Kn = λ / L".into(),
-        x_label: "Knudsen number Kn = λ / L".into(),
-        y_label: "τ p_max / (m L)".into(),
-        x_log: true,
-        y_log: true,
-        layers,
-    }
+    let title = "Relaxation time over the crossing time L m / p_max, against Kn = λ / L";
+    let labels = (title, "Knudsen number Kn = λ / L", "τ p_max / (m L)");
+    chart(labels, (true, true), layers)
 }
 
-fn theory(x: &[f64], f: impl Fn(f64) -> f64, paint: usize, label: &str) -> Layer {
-    Layer::Line {
-        points: x.iter().map(|&x| (x, f(x))).collect(),
-        paint: colour(paint),
-        width: 2,
-        dashed: true,
-        label: Some(label.into()),
-    }
+/// A theory's curve: dashed, two pixels wide, in the `paint`th colour.
+fn theory(points: Vec<(f64, f64)>, paint: usize, label: &str) -> Layer {
+    polyline(points, colour(paint), 2, true, Some(label.into()))
 }

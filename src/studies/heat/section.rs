@@ -4,13 +4,15 @@
 //! beside this one.
 
 use super::{Experiment, Gas, NAME, OPTIONS, RESULTS};
-use crate::model::chart::{ChartSpec, Layer, Paint};
+use crate::model::chart::{Layer, Paint};
 use crate::model::descriptor::Descriptor;
-use crate::model::report::{Figure, ReportSection};
+use crate::model::report::ReportSection;
 use crate::stats::ensemble::Runs as AllRuns;
 use crate::stats::format::{num, pm};
 use crate::stats::point_runs::{PointRuns, by_point};
 use crate::stats::summary::{Stats, z_score};
+use crate::studies::curves::polyline;
+pub(super) use crate::studies::curves::{bar, figure, measured};
 use crate::studies::options::value;
 
 pub(super) const INTRO: &str = include_str!("intro.md");
@@ -36,53 +38,9 @@ pub(super) fn label(rs: &Runs, gas: &Gas) -> String {
     }
 }
 
-/// (x, mean − se, mean, mean + se): an error bar of `s` at `x`.
-pub(super) fn bar(x: f64, s: &Stats) -> (f64, f64, f64, f64) {
-    (x, s.mean - s.stderr, s.mean, s.mean + s.stderr)
-}
-
-/// Measured points: their error bars, and markers at their centres.
-pub(super) fn measured(bars: Vec<(f64, f64, f64, f64)>, paint: Paint, label: &str) -> [Layer; 2] {
-    let points = bars.iter().map(|b| (b.0, b.2)).collect();
-    [
-        Layer::ErrorBars { bars, paint },
-        Layer::Markers {
-            points,
-            paint,
-            label: Some(label.into()),
-        },
-    ]
-}
-
-/// A dashed line of width 2.
+/// A dashed line of width 2: how this study draws its theories.
 pub(super) fn dashed(points: Vec<(f64, f64)>, paint: Paint, label: String) -> Layer {
-    Layer::Line {
-        points,
-        paint,
-        width: 2,
-        dashed: true,
-        label: Some(label),
-    }
-}
-
-/// A figure in `file`: title, axis labels, log axes (x, y) and layers.
-pub(super) fn figure(
-    file: &str,
-    (title, x_label, y_label): (String, &str, &str),
-    (x_log, y_log): (bool, bool),
-    layers: Vec<Layer>,
-) -> Figure {
-    Figure {
-        file: file.into(),
-        chart: ChartSpec {
-            title,
-            x_label: x_label.into(),
-            y_label: y_label.into(),
-            x_log,
-            y_log,
-            layers,
-        },
-    }
+    polyline(points, paint, 2, true, Some(label))
 }
 
 pub fn section(d: &Descriptor, runs: &AllRuns) -> anyhow::Result<ReportSection> {

@@ -4,12 +4,10 @@
 //! halves share. The prose is in the Markdown files beside this one.
 
 use super::{section_disks, section_rods};
-use crate::model::chart::{ChartSpec, Layer, Paint};
 use crate::model::report::{Figure, ReportSection};
 use crate::stats::ensemble::Runs;
 use crate::stats::format::{num, pm};
 use crate::stats::point_runs::{PointRuns, by_point};
-use crate::stats::summary::Stats;
 
 const METHODS: &str = include_str!("methods.md");
 
@@ -56,63 +54,6 @@ pub fn distinct<'a>(points: impl IntoIterator<Item = &'a Point<'a>>, value: &str
     v.sort_by(f64::total_cmp);
     v.dedup();
     v
-}
-
-/// Measured points (x, mean ± standard error): their error bars, and
-/// markers at their means.
-pub fn measured(points: &[(f64, Stats)], paint: Paint, label: String) -> [Layer; 2] {
-    let bars = points
-        .iter()
-        .map(|(x, s)| (*x, s.mean - s.stderr, s.mean, s.mean + s.stderr));
-    [
-        Layer::ErrorBars {
-            bars: bars.collect(),
-            paint,
-        },
-        Layer::Markers {
-            points: points.iter().map(|(x, s)| (*x, s.mean)).collect(),
-            paint,
-            label: Some(label),
-        },
-    ]
-}
-
-/// A thin dashed line.
-pub fn dashed(points: Vec<(f64, f64)>, paint: Paint, label: Option<String>) -> Layer {
-    Layer::Line {
-        points,
-        paint,
-        width: 1,
-        dashed: true,
-        label,
-    }
-}
-
-/// A figure in `file` (title, axis labels, log axes x and y), and the
-/// Markdown that shows it under `caption`.
-pub fn figure(
-    file: &str,
-    (title, x_label, y_label): (String, &str, &str),
-    (x_log, y_log): (bool, bool),
-    layers: Vec<Layer>,
-    caption: &str,
-) -> (Figure, String) {
-    let chart = ChartSpec {
-        title,
-        x_label: x_label.into(),
-        y_label: y_label.into(),
-        x_log,
-        y_log,
-        layers,
-    };
-    let text = format!("![{caption}]({file})\n\n");
-    (
-        Figure {
-            file: file.into(),
-            chart,
-        },
-        text,
-    )
 }
 
 pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {

@@ -3,10 +3,8 @@
 //! prediction, the mixing time against density and mass ratio, the
 //! measured self-diffusion coefficient against Enskog's.
 
+use super::section::{Point, all_mixed, distinct, mixed, tau_text};
 use super::section_rods::{SENTENCES, label_of};
-use super::section::{
-    Point, all_mixed, dashed, distinct, figure, measured, mixed, tau_text,
-};
 use crate::model::chart::colour;
 use crate::model::report::Figure;
 use crate::stats::fill::fill;
@@ -14,14 +12,18 @@ use crate::stats::format::{count, num, pm};
 use crate::stats::named::named as sentence;
 use crate::stats::summary::z_score;
 use crate::stats::table::table_row;
-use crate::studies::curves::mean_with_band;
+use crate::studies::curves::{bar, figure, mean_with_band, measured, polyline, show};
 use crate::theory::mixing::{slowest_mode_time, step_excess, step_mixing_time};
 
 const TEXT: &str = include_str!("disks.md");
 pub(super) const BULK: &str = include_str!("bulk.md");
 
 fn label(p: &Point) -> String {
-    let values = [("N", "particles"), ("η", "packing_fraction"), ("m_B/m_A", "mass_ratio")];
+    let values = [
+        ("N", "particles"),
+        ("η", "packing_fraction"),
+        ("m_B/m_A", "mass_ratio"),
+    ];
     label_of(p, &values)
 }
 
@@ -115,9 +117,8 @@ pub fn part(points: &[Point], figures: &mut Vec<Figure>) -> String {
     }
     let mut pictures = String::new();
     for (i, p) in mixing.iter().enumerate() {
-        if let Some((figure, text)) = sides(p, i, predicted(p, points).0) {
-            figures.push(figure);
-            pictures.push_str(&text);
+        if let Some((figure, caption)) = sides(p, i, predicted(p, points).0) {
+            pictures.push_str(&show(figures, figure, &caption));
         }
     }
     fill(
@@ -207,7 +208,7 @@ fn sides(p: &Point, index: usize, tau_d: f64) -> Option<(Figure, String)> {
             .iter()
             .map(|&t| (t, total * (0.5 + step_excess(t, slowest))));
         let label = Some("diffusion (A, left)".into());
-        layers.push(dashed(curve.collect(), colour(6), label));
+        layers.push(polyline(curve.collect(), colour(6), 1, true, label));
     }
     let caption = format!(
         "{}: disks of each species in each half against time, ensemble mean ± standard error over {} runs; dashed: the diffusion equation with the bulk fluid's measured D.",
@@ -217,7 +218,7 @@ fn sides(p: &Point, index: usize, tau_d: f64) -> Option<(Figure, String)> {
     let title = format!("Two species mixing, {}", label(p));
     let axes = (title, "time t [σ √(m/kT)]", "disks in the half");
     let file = format!("mixing_sides_{index}.svg");
-    Some(figure(&file, axes, (false, false), layers, &caption))
+    Some((figure(&file, axes, (false, false), layers), caption))
 }
 
 /// Mixing time against the packing fraction, per mass ratio: measured and
@@ -238,17 +239,17 @@ fn against_density(mixing: &[&Point], all: &[Point], figures: &mut Vec<Figure>) 
                 .total_cmp(&b.first("packing_fraction"))
         });
         let eta = |p: &Point| p.first("packing_fraction");
-        let measured_at: Vec<_> = at.iter().map(|p| (eta(p), p.stat("mixing_time"))).collect();
+        let measured_at = at.iter().map(|p| bar(eta(p), &p.stat("mixing_time")));
         let diffusive = at.iter().map(|p| (eta(p), predicted(p, all).0)).collect();
         layers.extend(measured(
-            &measured_at,
+            measured_at,
             colour(i),
-            format!("measured, m_B/m_A = {}", num(r)),
+            &format!("measured, m_B/m_A = {}", num(r)),
         ));
         let label = Some(format!("diffusion from D, m_B/m_A = {}", num(r)));
-        layers.push(dashed(diffusive, colour(i), label));
+        layers.push(polyline(diffusive, colour(i), 1, true, label));
     }
-    let (figure, text) = figure(
+    let figure = figure(
         "mixing_time_against_density.svg",
         (
             "2D mixing time against density".into(),
@@ -257,8 +258,7 @@ fn against_density(mixing: &[&Point], all: &[Point], figures: &mut Vec<Figure>) 
         ),
         (false, true),
         layers,
-        "Mixing time of the two species against the packing fraction, per mass ratio: measured (mean ± standard error; fully mixed points only) and the diffusion equation's from the measured self-diffusion coefficient (dashed).",
     );
-    figures.push(figure);
-    text
+    let caption = "Mixing time of the two species against the packing fraction, per mass ratio: measured (mean ± standard error; fully mixed points only) and the diffusion equation's from the measured self-diffusion coefficient (dashed).";
+    show(figures, figure, caption)
 }

@@ -2,18 +2,15 @@
 //! points flagged), its scaling with the mass spread and with N, the
 //! ensemble mean of the energy concentration against time.
 
-use super::section::{
-    Point, all_mixed, dashed, distinct, figure, measured, mixed, named, tau_text,
-};
+use super::section::{Point, all_mixed, distinct, mixed, named, tau_text};
 use crate::model::chart::colour;
 use crate::model::report::Figure;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
 use crate::stats::named::named as sentence;
 use crate::stats::line::line;
-use crate::stats::summary::Stats;
 use crate::stats::table::table_row;
-use crate::studies::curves::mean_with_band;
+use crate::studies::curves::{bar, figure, mean_with_band, measured, polyline, show};
 use crate::theory::mixing::equilibrium_concentration;
 
 const TEXT: &str = include_str!("rods.md");
@@ -224,19 +221,19 @@ fn scaling(points: &[Point], figures: &mut Vec<Figure>) -> (String, String) {
             num(n),
             f.text()
         ));
-        let mixed: Vec<(f64, Stats)> = at
+        let mixed = at
             .iter()
             .filter(|p| all_mixed(p))
             .map(|p| (spread(p), p.stat("mixing_collisions")))
             .filter(|(_, s)| s.n > 0)
-            .collect();
-        layers.extend(measured(&mixed, colour(i), format!("N = {}", num(n))));
+            .map(|(x, s)| bar(x, &s));
+        layers.extend(measured(mixed, colour(i), &format!("N = {}", num(n))));
         if b.is_finite() {
             let xs: Vec<f64> = small.iter().map(|p| spread(p)).collect();
             let lo = xs.iter().copied().fold(f64::INFINITY, f64::min);
             let hi = xs.iter().copied().fold(0.0, f64::max);
             let ends = [lo, hi].map(|e| (e, (a + b * e.ln()).exp()));
-            layers.push(dashed(ends.to_vec(), colour(i), None));
+            layers.push(polyline(ends.to_vec(), colour(i), 1, true, None));
         }
     }
     for e in distinct(sweep.iter().copied(), "mass_spread") {
@@ -250,7 +247,7 @@ fn scaling(points: &[Point], figures: &mut Vec<Figure>) -> (String, String) {
             fit(&at, |p| p.first("particles")).text()
         ));
     }
-    let (figure, shown) = figure(
+    let figure = figure(
         "mixing_time_against_spread.svg",
         (
             "1D mixing time against the mass spread".into(),
@@ -259,12 +256,11 @@ fn scaling(points: &[Point], figures: &mut Vec<Figure>) -> (String, String) {
         ),
         (true, true),
         layers,
-        &format!(
-            "Mixing time on the collision clock against the mass spread ε, per N (mean ± standard error over the runs, fully mixed points only; dashed: the fit over ε ≤ {SMALL_SPREAD})."
-        ),
     );
-    figures.push(figure);
-    (text, shown)
+    let caption = format!(
+        "Mixing time on the collision clock against the mass spread ε, per N (mean ± standard error over the runs, fully mixed points only; dashed: the fit over ε ≤ {SMALL_SPREAD})."
+    );
+    (text, show(figures, figure, &caption))
 }
 
 /// The ensemble mean of Y against time at the largest N, one curve per
@@ -291,10 +287,10 @@ fn curves(points: &[Point], figures: &mut Vec<Figure>) -> String {
         t.first().copied().unwrap_or(0.0),
         t.last().copied().unwrap_or(1.0),
     ];
-    let label = Some("equilibrium 3/(N + 2)".into());
-    layers.push(dashed(ends.map(|t| (t, eq)).to_vec(), colour(6), label));
+    let (level, label) = (ends.map(|t| (t, eq)), Some("equilibrium 3/(N + 2)".into()));
+    layers.push(polyline(level.to_vec(), colour(6), 1, true, label));
     let n = num(largest);
-    let (figure, text) = figure(
+    let figure = figure(
         "mixing_concentration.svg",
         (
             format!("Energy concentration after a hot start, N = {n}"),
@@ -303,12 +299,11 @@ fn curves(points: &[Point], figures: &mut Vec<Figure>) -> String {
         ),
         (false, true),
         layers,
-        &format!(
-            "Energy concentration Y = Σ(Kᵢ/K)² against time at N = {n}, ensemble mean ± standard error per mass spread; dashed: its equilibrium mean 3/(N + 2). Equal masses (ε = 0) stay at Y = 1."
-        ),
     );
-    figures.push(figure);
-    text
+    let caption = format!(
+        "Energy concentration Y = Σ(Kᵢ/K)² against time at N = {n}, ensemble mean ± standard error per mass spread; dashed: its equilibrium mean 3/(N + 2). Equal masses (ε = 0) stay at Y = 1."
+    );
+    show(figures, figure, &caption)
 }
 
 #[cfg(test)]

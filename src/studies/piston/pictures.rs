@@ -4,11 +4,12 @@
 //! prediction drawn in, and his question answered in numbers.
 
 use super::cases::{self, First};
-use crate::model::chart::{ChartSpec, Layer, Paint};
+use crate::model::chart::{Layer, Paint};
 use crate::model::report::Figure;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
 use crate::stats::summary::Stats;
+use crate::studies::curves::{figure, polyline, show};
 use crate::theory::piston::Law;
 use crate::theory::piston_equilibrium::degrees_of_freedom;
 use std::f64::consts::TAU;
@@ -63,11 +64,10 @@ pub fn mackay_case(all: &[cases::Run], figures: &mut Vec<Figure>) -> anyhow::Res
     let mut md = fill(ANSWER, &values);
     let horizons = [40.0_f64.min(duration), duration];
     for horizon in horizons {
-        let name = spacetime(&first, &paths, horizon, figures);
-        let _ = writeln!(
-            md,
-            "![MacKay's case, first {horizon} time units: positions of all particles (time up; light gas blue, heavier gas green, piston purple) and the piston's path predicted by the adiabatic (black dashed) and isothermal (grey dashed) oscillators from the same start.]({name})\n"
+        let caption = format!(
+            "MacKay's case, first {horizon} time units: positions of all particles (time up; light gas blue, heavier gas green, piston purple) and the piston's path predicted by the adiabatic (black dashed) and isothermal (grey dashed) oscillators from the same start."
         );
+        md += &show(figures, spacetime(&first, &paths, horizon), &caption);
     }
     for horizon in horizons {
         let name = format!("mackay_energy_{horizon}.svg");
@@ -109,11 +109,11 @@ fn answer(
     let tau = stat("relaxation_time");
     let speed = stat("speed_ratio").mean;
     let harmonic = 100.0 * (small / ad - 1.0);
+    let share = 100.0 * stat("initial_piston_share").mean;
+    let measured_period = period(measured.mean);
+    let period_error = measured.stderr * measured_period / measured.mean;
     vec![
-        (
-            "share",
-            format!("{:.0}", 100.0 * stat("initial_piston_share").mean),
-        ),
+        ("share", format!("{share:.0}")),
         ("mass", num(mass)),
         ("free", free.to_string()),
         ("equipartition", format!("{:.0}", 100.0 / free as f64)),
@@ -148,20 +148,11 @@ fn answer(
         ("piso", num(period(iso))),
         ("n", measured.n.to_string()),
         ("meas", both(&measured)),
-        (
-            "pmeas",
-            pm(
-                period(measured.mean),
-                measured.stderr * period(measured.mean) / measured.mean,
-            ),
-        ),
+        ("pmeas", pm(measured_period, period_error)),
         ("r_ad", both(&ratios[0])),
         ("r_in", both(&ratios[1])),
         ("r_iso", both(&ratios[2])),
-        (
-            "r_st",
-            pm(measured.mean / start, measured.stderr / start),
-        ),
+        ("r_st", pm(measured.mean / start, measured.stderr / start)),
         (
             "dev",
             format!(
@@ -235,53 +226,29 @@ fn verdict(ad: &Stats, inertia: &Stats, iso: &Stats) -> String {
     }
 }
 
-/// MacKay's space-time diagram with the predicted piston paths; returns the file name.
-fn spacetime(
-    first: &First<1>,
-    paths: &[PredictedPath],
-    horizon: f64,
-    figures: &mut Vec<Figure>,
-) -> String {
+/// MacKay's space-time diagram with the predicted piston paths.
+fn spacetime(first: &First<1>, paths: &[PredictedPath], horizon: f64) -> Figure {
     let built = &first.built;
     let before = |(t, x): (&f64, &f64)| (*t <= horizon).then_some((*x, *t));
     let mut layers: Vec<Layer> = (0..built.particles.len())
         .filter_map(|i| {
             let s = first.out.series(&format!("x.{i}"))?;
             let species = &built.species[built.particles[i].species as usize];
-            Some(Layer::Line {
-                points: s.t.iter().zip(&s.value).filter_map(before).collect(),
-                paint: Paint::solid(colour(species)),
-                width: if species == "piston" { 3 } else { 1 },
-                dashed: false,
-                label: None,
-            })
+            let points = s.t.iter().zip(&s.value).filter_map(before).collect();
+            let paint = Paint::solid(colour(species));
+            let width = if species == "piston" { 3 } else { 1 };
+            Some(polyline(points, paint, width, false, None))
         })
         .collect();
     for (path, rgb, label) in paths {
-        layers.push(Layer::Line {
-            points: path
-                .iter()
-                .map(|(t, x)| (t, x))
-                .filter_map(before)
-                .collect(),
-            paint: Paint::solid(*rgb),
-            width: 2,
-            dashed: true,
-            label: Some(label.to_string()),
-        });
+        let points = path.iter().map(|(t, x)| (t, x)).filter_map(before);
+        let (paint, label) = (Paint::solid(*rgb), Some(label.to_string()));
+        layers.push(polyline(points.collect(), paint, 2, true, label));
     }
     let name = format!("mackay_spacetime_{horizon}.svg");
-    figures.push(Figure {
-        file: name.clone(),
-        chart: ChartSpec {
-            title: format!("MacKay's piston: positions, first {horizon} time units"),
-            x_label: "position x [σ]".into(),
-            y_label: "time t".into(),
-            layers,
-            ..Default::default()
-        },
-    });
-    name
+    let title = format!("MacKay's piston: positions, first {horizon} time units");
+    let labels = (title, "position x [σ]", "time t");
+    figure(&name, labels, (false, false), layers)
 }
 
 /// Kinetic energy of each gas and the piston, with the oscillator energy
@@ -300,46 +267,20 @@ pub(super) fn energies<const D: usize>(
         .iter()
         .filter_map(|s| {
             let species = s.observable.strip_prefix("kinetic_energy.")?;
-            Some(Layer::Line {
-                points: s.t.iter().zip(&s.value).filter_map(before).collect(),
-                paint: Paint::solid(colour(species)),
-                width: 2,
-                dashed: false,
-                label: Some(species.to_string()),
-            })
+            let points = s.t.iter().zip(&s.value).filter_map(before).collect();
+            let (paint, label) = (Paint::solid(colour(species)), Some(species.to_string()));
+            Some(polyline(points, paint, 2, false, label))
         })
         .collect();
-    layers.push(Layer::Line {
-        points: first
-            .samples
-            .t
-            .iter()
-            .zip(&first.energy)
-            .filter_map(before)
-            .collect(),
-        paint: Paint::solid(PURPLE).faded(0.6),
-        width: 1,
-        dashed: true,
-        label: Some("piston oscillator energy".into()),
-    });
-    let equilibrium = first.equilibrium;
-    layers.push(Layer::Line {
-        points: vec![(0.0, equilibrium), (horizon, equilibrium)],
-        paint: Paint::solid(GREY),
-        width: 1,
-        dashed: true,
-        label: Some("its equilibrium mean".into()),
-    });
-    figures.push(Figure {
-        file: name.to_string(),
-        chart: ChartSpec {
-            title: title.to_string(),
-            x_label: "time t".into(),
-            y_label: "kinetic energy".into(),
-            layers,
-            ..Default::default()
-        },
-    });
+    let oscillator = first.samples.t.iter().zip(&first.energy).filter_map(before);
+    let label = Some("piston oscillator energy".into());
+    let paint = Paint::solid(PURPLE).faded(0.6);
+    layers.push(polyline(oscillator.collect(), paint, 1, true, label));
+    let equilibrium = vec![(0.0, first.equilibrium), (horizon, first.equilibrium)];
+    let label = Some("its equilibrium mean".into());
+    layers.push(polyline(equilibrium, Paint::solid(GREY), 1, true, label));
+    let labels = (title.to_string(), "time t", "kinetic energy");
+    figures.push(figure(name, labels, (false, false), layers));
 }
 
 #[cfg(test)]

@@ -7,22 +7,13 @@ use super::finite_size::Fit;
 use super::phases::DISK_FLUID_ENDS;
 use super::points::Point;
 use crate::model::chart::{ChartSpec, Layer, Paint, colour};
+use crate::studies::curves::{chart, markers, measured, polyline, sampled};
 
 pub const NAMES: [&str; 3] = [
     "Rods (1D, walls)",
     "Disks (2D, periodic)",
     "Spheres (3D, periodic)",
 ];
-
-/// `f` at 201 packing fractions from `first` to `top`.
-fn curve(first: f64, top: f64, f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
-    (0..=200)
-        .map(|k| {
-            let eta = first + (top - first) * k as f64 / 200.0;
-            (eta, f(eta))
-        })
-        .collect()
-}
 
 /// The bulk points of dimension `d`: periodic boxes, and rods.
 pub fn bulk(all: &[Point], d: usize) -> Vec<&Point> {
@@ -34,7 +25,7 @@ pub fn bulk(all: &[Point], d: usize) -> Vec<&Point> {
 pub fn z_chart(all: &[Point]) -> ChartSpec {
     let top = all.iter().map(|p| p.eta).fold(0.0, f64::max) * 1.02;
     let ideal = vec![(0.0, 1.0), (top, 1.0)];
-    let mut layers = vec![line(ideal, BLACK, true, Some("ideal gas".into()))];
+    let mut layers = vec![thin(ideal, BLACK, true, Some("ideal gas".into()))];
     for d in 1..=3 {
         let pts = bulk(all, d);
         if pts.is_empty() {
@@ -50,20 +41,15 @@ pub fn z_chart(all: &[Point]) -> ChartSpec {
                 .min(e.defined_below);
             let faded = paint.faded(if i == 0 { 1.0 } else { 0.6 });
             let label = Some(format!("{}D: {}", d, e.name));
-            layers.push(line(curve(0.0, end, e.z), faded, i > 0, label));
+            layers.push(thin(sampled(0.0, end, 200, e.z), faded, i > 0, label));
         }
-        markers(&mut layers, &pts, paint, NAMES[d - 1], |p| {
+        layers.extend(at_eta(&pts, paint, NAMES[d - 1], |p| {
             (p.z.mean, p.error().0)
-        });
+        }));
     }
-    ChartSpec {
-        title: "Equation of state: Z = βP/ρ".into(),
-        x_label: "packing fraction η".into(),
-        y_label: "Z = βP/ρ".into(),
-        y_log: true,
-        layers,
-        ..Default::default()
-    }
+    let title = "Equation of state: Z = βP/ρ";
+    let labels = (title, "packing fraction η", "Z = βP/ρ");
+    chart(labels, (false, true), layers)
 }
 
 /// None when no point has a reference equation that holds (the disks'
@@ -85,25 +71,21 @@ pub fn deviation_chart(all: &[Point]) -> Option<ChartSpec> {
         let reach = pts.iter().map(|p| p.eta).fold(0.0, f64::max) * 1.02;
         for e in &eqs[1..] {
             let over = |eta| (e.z)(eta) / (reference.z)(eta) - 1.0;
-            let points = curve(0.0, reach.min(e.holds_below + 0.05), over);
+            let points = sampled(0.0, reach.min(e.holds_below + 0.05), 200, over);
             let label = Some(format!("{}D: {}", d, e.name));
-            layers.push(line(points, paint.faded(0.6), true, label));
+            layers.push(thin(points, paint.faded(0.6), true, label));
         }
-        markers(&mut layers, &pts, paint, NAMES[d - 1], |p| {
+        layers.extend(at_eta(&pts, paint, NAMES[d - 1], |p| {
             let r = (reference.z)(p.eta);
             (p.z.mean / r - 1.0, p.error().0 / r)
-        });
+        }));
     }
     if layers.is_empty() {
         return None;
     }
-    Some(ChartSpec {
-        title: "Z over the reference equation, minus 1 (fluid points, finite N)".into(),
-        x_label: "packing fraction η".into(),
-        y_label: "Z / Z_reference − 1".into(),
-        layers,
-        ..Default::default()
-    })
+    let title = "Z over the reference equation, minus 1 (fluid points, finite N)";
+    let labels = (title, "packing fraction η", "Z / Z_reference − 1");
+    Some(chart(labels, (false, false), layers))
 }
 
 /// The pressure of a few runs against time, each over its own mean.
@@ -115,20 +97,12 @@ pub fn time_chart(examples: &[(&Point, &str)]) -> ChartSpec {
         };
         let mean = v.iter().sum::<f64>() / v.len() as f64;
         let points = t.iter().zip(v).map(|(t, v)| (*t, v / mean)).collect();
-        layers.push(line(
-            points,
-            colour(i).faded(0.7),
-            false,
-            Some(label.to_string()),
-        ));
+        let (paint, label) = (colour(i).faded(0.7), Some(label.to_string()));
+        layers.push(thin(points, paint, false, label));
     }
-    ChartSpec {
-        title: "Pressure against time (one replica each, per sampling interval)".into(),
-        x_label: "time t (σ√(m/kT))".into(),
-        y_label: "P(t) / mean P".into(),
-        layers,
-        ..Default::default()
-    }
+    let title = "Pressure against time (one replica each, per sampling interval)";
+    let labels = (title, "time t (σ√(m/kT))", "P(t) / mean P");
+    chart(labels, (false, false), layers)
 }
 
 pub fn finite_size_chart(fits: &[Fit]) -> ChartSpec {
@@ -138,37 +112,24 @@ pub fn finite_size_chart(fits: &[Fit]) -> ChartSpec {
         let r = (equations::of(f.dimension)[0].z)(f.eta);
         let rel = |z: f64| z / r - 1.0;
         let xmax = f.data.iter().map(|d| 1.0 / d.0 as f64).fold(0.0, f64::max);
-        let xs = (0..=20).map(|k| xmax * k as f64 / 20.0);
-        let fitted = xs.map(|x| (x, rel(f.z_inf + f.slope * x))).collect();
-        layers.push(line(fitted, paint.faded(0.6), true, None));
+        let fitted = sampled(0.0, xmax, 20, |x| rel(f.z_inf + f.slope * x));
+        layers.push(thin(fitted, paint.faded(0.6), true, None));
         // The points at 1/N, and the extrapolation at 0.
         let bars = f.data.iter().map(|&(n, z, e)| (1.0 / n as f64, z, e));
         let bars = bars.chain([(0.0, f.z_inf, f.z_inf_err)]);
-        layers.push(Layer::ErrorBars {
-            bars: bars
-                .map(|(x, z, e)| (x, rel(z - e), rel(z), rel(z + e)))
-                .collect(),
-            paint,
-        });
-        layers.push(Layer::Markers {
-            points: f
-                .data
-                .iter()
-                .map(|&(n, z, _)| (1.0 / n as f64, rel(z)))
-                .collect(),
-            paint,
-            label: Some(format!("{}D, η = {:.3}", f.dimension, f.eta)),
-        });
+        let bars = bars
+            .map(|(x, z, e)| (x, rel(z - e), rel(z), rel(z + e)))
+            .collect();
+        layers.push(Layer::ErrorBars { bars, paint });
+        let points = f.data.iter().map(|&(n, z, _)| (1.0 / n as f64, rel(z)));
+        let label = format!("{}D, η = {:.3}", f.dimension, f.eta);
+        layers.push(markers(points.collect(), paint, Some(label)));
     }
     let zero = vec![(0.0, 0.0), (1.0 / 64.0, 0.0)];
-    layers.push(line(zero, BLACK, true, Some("reference equation".into())));
-    ChartSpec {
-        title: "Finite size: Z against 1/N, extrapolated to N → ∞ (at 1/N = 0)".into(),
-        x_label: "1/N".into(),
-        y_label: "Z / Z_reference − 1".into(),
-        layers,
-        ..Default::default()
-    }
+    layers.push(thin(zero, BLACK, true, Some("reference equation".into())));
+    let title = "Finite size: Z against 1/N, extrapolated to N → ∞ (at 1/N = 0)";
+    let labels = (title, "1/N", "Z / Z_reference − 1");
+    chart(labels, (false, false), layers)
 }
 
 /// βPσ² = Z ρ of the dense disks of one size, with the fluid's equation as
@@ -179,27 +140,21 @@ pub fn dense_disks_chart(pts: &[&Point]) -> ChartSpec {
     // A line joins the means; the fluid's equation (at N → ∞) is drawn up to
     // where the fluid ends, not beyond: it knows nothing of the hexatic phase.
     let means = pts.iter().map(|p| (p.eta, p.z.mean * rho(p.eta))).collect();
-    let mut layers = vec![line(means, paint.faded(0.5), true, None)];
+    let mut layers = vec![thin(means, paint.faded(0.5), true, None)];
     let fluid = &equations::of(2)[0];
     let first = pts.iter().map(|p| p.eta).fold(f64::INFINITY, f64::min);
     if first < DISK_FLUID_ENDS {
-        let points = curve(first, DISK_FLUID_ENDS, |eta| (fluid.z)(eta) * rho(eta));
+        let points = sampled(first, DISK_FLUID_ENDS, 200, |eta| (fluid.z)(eta) * rho(eta));
         let label = Some(format!("{} (fluid, N → ∞)", fluid.name));
-        layers.push(line(points, colour(0), false, label));
+        layers.push(thin(points, colour(0), false, label));
     }
-    markers(&mut layers, pts, paint, "disks", |p| {
+    layers.extend(at_eta(pts, paint, "disks", |p| {
         (p.z.mean * rho(p.eta), p.error().0 * rho(p.eta))
-    });
-    ChartSpec {
-        title: format!(
-            "Disks near the liquid-hexatic transition, N = {}",
-            pts.first().map_or(0, |p| p.particles)
-        ),
-        x_label: "packing fraction η".into(),
-        y_label: "βPσ²".into(),
-        layers,
-        ..Default::default()
-    }
+    }));
+    let n = pts.first().map_or(0, |p| p.particles);
+    let title = format!("Disks near the liquid-hexatic transition, N = {n}");
+    let labels = (title, "packing fraction η", "βPσ²");
+    chart(labels, (false, false), layers)
 }
 
 const BLACK: Paint = Paint {
@@ -208,36 +163,20 @@ const BLACK: Paint = Paint {
 };
 
 /// A line one pixel wide.
-fn line(points: Vec<(f64, f64)>, paint: Paint, dashed: bool, label: Option<String>) -> Layer {
-    Layer::Line {
-        points,
-        paint,
-        width: 1,
-        dashed,
-        label,
-    }
+fn thin(points: Vec<(f64, f64)>, paint: Paint, dashed: bool, label: Option<String>) -> Layer {
+    polyline(points, paint, 1, dashed, label)
 }
 
-fn markers(
-    layers: &mut Vec<Layer>,
+/// The points at their η: `y` gives each one's value and error.
+fn at_eta(
     pts: &[&Point],
     paint: Paint,
     label: &str,
     y: impl Fn(&Point) -> (f64, f64),
-) {
-    layers.push(Layer::ErrorBars {
-        bars: pts
-            .iter()
-            .map(|p| {
-                let (m, e) = y(p);
-                (p.eta, m - e, m, m + e)
-            })
-            .collect(),
-        paint,
+) -> [Layer; 2] {
+    let bars = pts.iter().map(|p| {
+        let (m, e) = y(p);
+        (p.eta, m - e, m, m + e)
     });
-    layers.push(Layer::Markers {
-        points: pts.iter().map(|p| (p.eta, y(p).0)).collect(),
-        paint,
-        label: Some(label.into()),
-    });
+    measured(bars, paint, label)
 }
