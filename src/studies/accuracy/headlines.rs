@@ -416,7 +416,13 @@ fn chart(all: &[Length], names: &[&'static str]) -> ChartSpec {
             label: Some(format!("{study}: one run per length")),
         });
         let label = format!("{study}: model, replicas");
-        layers.push(replicas_line(best.cpu, best.model.scatter, 15, paint, label));
+        layers.push(replicas_line(
+            best.cpu,
+            best.model.scatter,
+            15,
+            paint,
+            label,
+        ));
     }
     ChartSpec {
         title: "Headline results: error against CPU time".into(),

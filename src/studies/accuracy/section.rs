@@ -363,7 +363,11 @@ fn table(scene: &str, all: &[Group]) -> String {
     for g in rows {
         let exact_row = g.integrator == Integrator::Exact;
         let r = reference.filter(|_| !exact_row);
-        let mut cells = vec![g.integrator.name().to_string(), opt(g.dt), g.runs.to_string()];
+        let mut cells = vec![
+            g.integrator.name().to_string(),
+            opt(g.dt),
+            g.runs.to_string(),
+        ];
         for of in compared {
             cells.extend([stat(of(g)), err(of(g), r.map(of))]);
         }

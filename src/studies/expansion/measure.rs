@@ -80,7 +80,9 @@ impl Gas {
         }
         let n: usize = kinds.iter().map(|k| k.2).sum();
         let diameter = kinds.iter().map(|k| 2.0 * k.0 * k.2 as f64).sum::<f64>() / n as f64;
-        let filled: f64 = (kinds.iter()).map(|k| ball_volume(dimension, k.0) * k.2 as f64).sum();
+        let filled: f64 = (kinds.iter())
+            .map(|k| ball_volume(dimension, k.0) * k.2 as f64)
+            .sum();
         let volume: f64 = size.iter().product();
         Gas {
             dimension,

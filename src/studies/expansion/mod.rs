@@ -60,7 +60,11 @@ impl Study for Expansion {
     }
     /// D along y where the run records the mean-squared displacement.
     fn writes(&self, d: &Descriptor) -> Vec<&'static str> {
-        let msd = d.observe.series.iter().any(|s| s == "mean_squared_displacement");
+        let msd = d
+            .observe
+            .series
+            .iter()
+            .any(|s| s == "mean_squared_displacement");
         RESULTS
             .iter()
             .copied()

@@ -251,7 +251,11 @@ fn left_fractions<'a>(
         let chart = scaled(gs, label);
         figures.push(Figure { file, chart });
     }
-    singles.extend(cases.iter().map(|g| (g.spec.case.clone().unwrap_or_default(), *g)));
+    singles.extend(
+        cases
+            .iter()
+            .map(|g| (g.spec.case.clone().unwrap_or_default(), *g)),
+    );
     for (name, g) in &singles {
         let file = format!("expansion_left_fraction_{name}.svg");
         let runs = g.outs.len().to_string();
@@ -293,8 +297,16 @@ fn points_table<'a>(groups: impl Iterator<Item = &'a &'a Group<'a>>) -> String {
             num(zf),
             num(free_z(g, g.free_thermal())),
             num(tau_diffusive),
-            format!("{} ({})", pm(late.mean, late.stderr), num(z(late.mean, 0.5, late.stderr))),
-            format!("{} ({})", pm(var.mean, var.stderr), num(z(var.mean, s0, var.stderr))),
+            format!(
+                "{} ({})",
+                pm(late.mean, late.stderr),
+                num(z(late.mean, 0.5, late.stderr))
+            ),
+            format!(
+                "{} ({})",
+                pm(var.mean, var.stderr),
+                num(z(var.mean, s0, var.stderr))
+            ),
             num(s0),
             num(g.cpu()),
             count(g.collisions()),

@@ -7,8 +7,8 @@ use crate::model::chart::colour;
 use crate::model::report::Figure;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
-use crate::stats::named::named as sentence;
 use crate::stats::line::line;
+use crate::stats::named::named as sentence;
 use crate::stats::table::table_row;
 use crate::studies::curves::{bar, figure, mean_with_band, measured, polyline, show};
 use crate::theory::mixing::equilibrium_concentration;
@@ -29,12 +29,21 @@ const MANY: f64 = 10.0;
 
 /// A point's name: its values of the results named, each after its symbol.
 pub(super) fn label_of(p: &Point, values: &[(&str, &str)]) -> String {
-    let values = values.iter().map(|(symbol, r)| format!("{symbol} = {}", num(p.first(r))));
+    let values = values
+        .iter()
+        .map(|(symbol, r)| format!("{symbol} = {}", num(p.first(r))));
     named(p, values.collect::<Vec<_>>().join(", "))
 }
 
 fn label(p: &Point) -> String {
-    label_of(p, &[("N", "particles"), ("ε", "mass_spread"), ("M/m̄", "hot_mass_ratio")])
+    label_of(
+        p,
+        &[
+            ("N", "particles"),
+            ("ε", "mass_spread"),
+            ("M/m̄", "hot_mass_ratio"),
+        ],
+    )
 }
 
 /// A fit of ln tau (collision clock) against ln x over the fully mixed
@@ -119,7 +128,12 @@ pub fn part(points: &[Point], figures: &mut Vec<Figure>) -> String {
     }
     let censored = match censored.is_empty() {
         true => String::new(),
-        false => fill(sentence(SENTENCES, "censored"), &[("at", censored.join("; "))]) + "\n\n",
+        false => {
+            fill(
+                sentence(SENTENCES, "censored"),
+                &[("at", censored.join("; "))],
+            ) + "\n\n"
+        }
     };
     let (fits, mut shown) = scaling(points, figures);
     shown.push_str(&curves(points, figures));
@@ -170,7 +184,10 @@ fn widest(points: &[Point]) -> String {
     let verdict = match held >= MANY {
         true => fill(
             sentence(SENTENCES, "many"),
-            &[("length", num(shortest.round())), ("held", num(held.floor()))],
+            &[
+                ("length", num(shortest.round())),
+                ("held", num(held.floor())),
+            ],
         ),
         false => fill(
             sentence(SENTENCES, "few"),
@@ -312,6 +329,9 @@ mod tests {
     #[test]
     fn every_sentence_is_there() {
         let names: Vec<&str> = crate::stats::named::names(super::SENTENCES).collect();
-        assert_eq!(names, ["censored", "many", "few", "agree", "above", "below"]);
+        assert_eq!(
+            names,
+            ["censored", "many", "few", "agree", "above", "below"]
+        );
     }
 }

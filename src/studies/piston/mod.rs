@@ -104,7 +104,12 @@ impl Study for Piston {
     }
     fn writes(&self, d: &Descriptor) -> Vec<&'static str> {
         let rods = crate::scene::resolve(&d.scene).is_ok_and(|s| s.dimension() == Ok(1));
-        RESULTS[..if rods { RESULTS.len() - 8 } else { RESULTS.len() }].to_vec()
+        RESULTS[..if rods {
+            RESULTS.len() - 8
+        } else {
+            RESULTS.len()
+        }]
+            .to_vec()
     }
     fn per_run(&self, run: &Finished, out: &mut RunOutput) -> Result<(), String> {
         let geometry = match run.start {

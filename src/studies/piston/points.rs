@@ -130,7 +130,9 @@ pub fn marked(at: &[(f64, Stats)], floor: Option<f64>, paint: Paint, label: Stri
         Some(f) => (s.mean - s.stderr).max(s.mean / f),
         None => s.mean - s.stderr,
     };
-    let bars = at.iter().map(|(x, s)| (*x, low(s), s.mean, s.mean + s.stderr));
+    let bars = at
+        .iter()
+        .map(|(x, s)| (*x, low(s), s.mean, s.mean + s.stderr));
     [
         Layer::ErrorBars {
             bars: bars.collect(),

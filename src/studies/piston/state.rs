@@ -171,7 +171,12 @@ impl Samples {
             total: get("kinetic_energy")?.value.clone(),
         };
         let n = samples.t.len();
-        let series = [&samples.piston, &samples.left, &samples.right, &samples.total];
+        let series = [
+            &samples.piston,
+            &samples.left,
+            &samples.right,
+            &samples.total,
+        ];
         if series.iter().any(|v| v.len() != n) {
             return Err("the piston series have different lengths".into());
         }
