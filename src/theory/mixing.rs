@@ -19,8 +19,8 @@
 //!   with its reduced mass, D_ij = (1 / (2 n sigma g)) sqrt(kT (m_i + m_j)
 //!   / (2 pi m_i m_j)), and a tracer of kind i with 1 / D_i = sum_j x_j /
 //!   D_ij (first Chapman-Enskog approximation for a mixture, Chapman and
-//!   Cowling 1970, ch. 9; its higher approximations move D by a few per
-//!   cent at mass ratios of ten).
+//!   Cowling 1970, ch. 9; higher approximations correct it, the more the
+//!   more unequal the masses).
 
 use std::f64::consts::{E, PI};
 

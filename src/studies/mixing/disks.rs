@@ -16,7 +16,7 @@ use crate::stats::diffusion::diffusion;
 use crate::stats::late::late_mean;
 use crate::stats::passage::first_passage;
 use crate::theory::heat::mean_free_path;
-use crate::theory::mixing::disk_diffusion_enskog;
+use crate::theory::mixing::disk_mixture_diffusion_enskog;
 
 /// kT of a Maxwellian start (the default when the scene gives none); None
 /// for other velocity rules.
@@ -110,10 +110,11 @@ pub fn per_run(
         }
         let dmix = total / n as f64;
         let kt = temperature(d).unwrap_or(f64::NAN);
-        // Enskog for one kind of disk only: the species differ only by colour.
-        let same = ma == mb && balls.iter().all(|p| p.radius == balls[0].radius);
-        let enskog = if same {
-            disk_diffusion_enskog(density, sigma, kt, ma, eta)
+        // Enskog for equal disks, each pair moving with its reduced mass.
+        let one_size = balls.iter().all(|p| p.radius == balls[0].radius);
+        let x = [na, nb].map(|c| c as f64 / n as f64);
+        let enskog = if one_size {
+            disk_mixture_diffusion_enskog(density, sigma, kt, [ma, mb], x, eta)
         } else {
             f64::NAN
         };
