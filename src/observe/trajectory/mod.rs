@@ -120,11 +120,6 @@ impl<S: FrameSink> Framing<S> {
         }
     }
 
-    /// Frames written.
-    pub fn written(&self) -> u64 {
-        self.written
-    }
-
     /// Complete the file; an error if any write failed or the image flags
     /// could not be counted.
     pub fn finish(mut self) -> Result<S, String> {
