@@ -589,6 +589,7 @@ pub fn describe_plan(loaded: &Loaded, specs: &[RunSpec], threads: usize) -> Stri
         specs.len()
     );
     out += &crate::runner::plan::error_bars::describe(specs);
+    out += &crate::runner::plan::trajectory::describe(specs);
     if unknown {
         out += &format!(
             "  estimated cost: unknown for {} of {} points (their scenes give no collision \

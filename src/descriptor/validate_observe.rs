@@ -8,6 +8,7 @@ use crate::model::descriptor::Descriptor;
 use crate::model::movie::MovieSpec;
 use crate::model::need::Need;
 use crate::model::scene::{Boundary, SceneSpec};
+use crate::model::trajectory::{MAX_PARTICLE_FRAMES, TrajectorySpec};
 use crate::observe::{CATALOGUE, Kind, catalogue};
 use crate::studies;
 
@@ -38,7 +39,80 @@ pub fn observe(d: &Descriptor, scene: &SceneSpec) -> Check {
         movie_fits(movie, scene)?;
         movie_within_run(movie, d)?;
     }
+    if let Some(trajectory) = &o.trajectory {
+        trajectory_fits(trajectory, d, scene)?;
+    }
     Ok(())
+}
+
+/// A trajectory's frames: some time apart, from the exact engine (what a
+/// fixed step would film is not the run), and at most
+/// `MAX_PARTICLE_FRAMES` particle-frames over a run of known length (a run
+/// stopped by collisions is checked against its estimated length with the
+/// plan, `runner::plan::confirm`). Its `runs` are checked with the plan.
+fn trajectory_fits(t: &TrajectorySpec, d: &Descriptor, scene: &SceneSpec) -> Check {
+    if !(t.every.is_finite() && t.every > 0.0) {
+        return bad(
+            "observe.trajectory.every",
+            format!(
+                "{} is not a simulated time between frames",
+                compact(t.every)
+            ),
+            Some("a number > 0, e.g. every = 0.5"),
+        );
+    }
+    if t.runs.is_empty() {
+        return bad(
+            "observe.trajectory.runs",
+            "[] names no run to write",
+            Some("the `run_id`s to write, e.g. runs = [0] (the default)"),
+        );
+    }
+    if d.run.integrator != crate::model::descriptor::Integrator::Exact {
+        return bad(
+            "observe.trajectory",
+            format!(
+                "a trajectory films the exact engine's run, not a `{}` one",
+                d.run.integrator.name()
+            ),
+            Some("leave `run.integrator` at \"exact\" or drop the trajectory"),
+        );
+    }
+    let Some(duration) = d.run.duration else {
+        return Ok(());
+    };
+    let length = d.run.equilibrate + duration;
+    let particles = crate::descriptor::validate_scene::particles(scene) as f64;
+    let held = t.frames(length) * particles;
+    if held > MAX_PARTICLE_FRAMES {
+        let every = length * particles / MAX_PARTICLE_FRAMES;
+        return bad(
+            "observe.trajectory.every",
+            format!(
+                "{}: {} frames of {} particles over the run (`equilibrate` + `duration` = {}) \
+                 are {held:.1e} particle-frames; a trajectory holds at most {MAX_PARTICLE_FRAMES:.0e} \
+                 (about 3 GB of GSD)",
+                compact(t.every),
+                compact(t.frames(length)),
+                compact(particles),
+                compact(length)
+            ),
+            Some(&format!(
+                "fewer frames: `every = {}` or more",
+                compact_up(every)
+            )),
+        );
+    }
+    Ok(())
+}
+
+/// A number rounded up to two significant digits, for a hint.
+fn compact_up(x: f64) -> String {
+    if !(x.is_finite() && x > 0.0) {
+        return compact(x);
+    }
+    let scale = 10f64.powf(x.log10().floor() - 1.0);
+    compact((x / scale).ceil() * scale)
 }
 
 /// Most frames a movie has, and most particle positions in all its frames

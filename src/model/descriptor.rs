@@ -206,4 +206,7 @@ pub struct ObserveSection {
     /// A movie of the plan's first run, embedded in the report.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub movie: Option<super::movie::MovieSpec>,
+    /// Frames of chosen runs written to `OUT/trajectory-<run_id>.<format>`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub trajectory: Option<super::trajectory::TrajectorySpec>,
 }

@@ -15,3 +15,4 @@ pub mod scene;
 pub mod shared;
 pub mod summary;
 pub mod text;
+pub mod trajectory;

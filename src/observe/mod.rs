@@ -16,6 +16,7 @@ mod set;
 pub mod state;
 #[cfg(test)]
 mod tests;
+pub mod trajectory;
 
 mod density_x;
 mod energy_autocorrelation;

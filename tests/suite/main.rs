@@ -59,3 +59,4 @@ mod study_runner;
 mod study_shards;
 mod study_store;
 mod study_wall_heat;
+mod trajectory;

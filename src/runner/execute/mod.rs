@@ -8,3 +8,4 @@ pub mod movie;
 pub mod progress;
 pub mod run;
 pub mod simulate;
+pub mod trajectory;

@@ -14,6 +14,7 @@ use crate::model::run_spec::RunSpec;
 use crate::runner::execute::checkpoint::{self, Place};
 use crate::runner::execute::cpu_time::thread_cpu_seconds;
 use crate::runner::execute::progress::{Progress, ProgressMode};
+use crate::runner::execute::trajectory;
 use crate::runner::plan::seeds::fnv1a;
 use crate::runner::store::outdir::{self, Unusable, remove_if_present};
 pub use crate::runner::store::record::RunRecord;
@@ -114,13 +115,18 @@ impl RunnerReport {
 /// it computes: the bonkers version, its seed and replica, and its
 /// descriptor with the sweep values applied, less what cannot change a run
 /// (`[study]`: name, description and replica count; `[sweep]`, `[[case]]`
-/// and `[quick]`, already applied). So raising `--replicas` or inserting a sweep value
+/// and `[quick]`, already applied; `[observe] trajectory`, which films the
+/// run again). So raising `--replicas` or inserting a sweep value
 /// reuses the runs already done.
 pub fn fingerprint(spec: &RunSpec) -> String {
     let mut run = serde_json::to_value(&*spec.descriptor).unwrap_or_default();
     if let Some(sections) = run.as_object_mut() {
         for section in ["study", "sweep", "case", "quick"] {
             sections.remove(section);
+        }
+        // A trajectory is the run filmed again: it changes no result.
+        if let Some(observe) = sections.get_mut("observe").and_then(|o| o.as_object_mut()) {
+            observe.remove("trajectory");
         }
     }
     let key = format!(
@@ -186,12 +192,21 @@ pub fn run_subset(
         tidy(specs, out_dir, options.prune)?
     };
 
-    // Each saved record is read once, to learn whether it can be reused.
+    // Each saved record is read once, to learn whether it can be reused; a
+    // reused run whose trajectory file is missing is filmed again (only).
     let mut todo = Vec::new();
+    let mut films = Vec::new();
     for &i in &picked {
         match read_record(out_dir, &specs[i]) {
             Stored::Found(record)
-                if record.ok() && record.fingerprint == fingerprint(&specs[i]) => {}
+                if record.ok() && record.fingerprint == fingerprint(&specs[i]) =>
+            {
+                if let Some(t) = trajectory::wanted(&specs[i])
+                    && !trajectory::file(out_dir, t, specs[i].run_id).exists()
+                {
+                    films.push((i, record));
+                }
+            }
             Stored::Found(record) => {
                 tidied.mismatched += usize::from(record.ok());
                 todo.push(i);
@@ -215,7 +230,7 @@ pub fn run_subset(
         .threads
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
         // An idle thread costs a stack and does nothing.
-        .min(todo.len())
+        .min(todo.len() + films.len())
         .max(1);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
@@ -238,8 +253,9 @@ pub fn run_subset(
                     fingerprint: fingerprint(&specs[i]),
                     continued: false,
                 });
-                let (record, continued) =
+                let (mut record, continued) =
                     checkpoint::scoped(place, || execute(&specs[i], simulate));
+                film(out_dir, &specs[i], &mut record);
                 save(out_dir, &specs[i], &record)?;
                 remove_checkpoint(&dir, specs[i].seed)?;
                 progress.finished(record.ok(), record.output.collisions);
@@ -248,8 +264,33 @@ pub fn run_subset(
             .collect()
     });
     progress.finish();
+    // Reused runs without their trajectory file: filmed, and their record
+    // kept unless filming fails (then the run is failed and made again next
+    // time).
+    let refilmed: Vec<anyhow::Result<Option<bool>>> = pool.install(|| {
+        films
+            .into_par_iter()
+            .map(|(i, mut record)| {
+                if stop.load(Ordering::SeqCst) {
+                    return Ok(None);
+                }
+                film(out_dir, &specs[i], &mut record);
+                if !record.ok() {
+                    save(out_dir, &specs[i], &record)?;
+                }
+                Ok(Some(record.ok()))
+            })
+            .collect()
+    });
 
     let (mut ran, mut failed, mut interrupted, mut resumed_runs) = (0, 0, false, 0);
+    let mut failed_films = 0;
+    for filmed in refilmed {
+        match filmed? {
+            Some(ok) => failed_films += usize::from(!ok),
+            None => interrupted = true,
+        }
+    }
     for result in done {
         match result? {
             Some((ok, continued)) => {
@@ -262,13 +303,36 @@ pub fn run_subset(
     }
     Ok(RunnerReport {
         picked: picked.len(),
-        ran,
-        failed,
-        resumed,
+        ran: ran + failed_films,
+        failed: failed + failed_films,
+        resumed: resumed - failed_films,
         interrupted,
         continued: resumed_runs,
         threads,
     })
+}
+
+/// Write the trajectory a successful run's descriptor asks of it; a
+/// trajectory that cannot be written fails the run (its record says why).
+/// Filming runs the run again: twice its events are room enough.
+fn film(out_dir: &Path, spec: &RunSpec, record: &mut RunRecord) {
+    let Some(t) = trajectory::wanted(spec).filter(|_| record.ok()) else {
+        return;
+    };
+    let budget = record
+        .output
+        .events
+        .saturating_mul(2)
+        .saturating_add(1_000_000);
+    let filmed = catch_unwind(AssertUnwindSafe(|| {
+        trajectory::write(spec, t, out_dir, budget)
+    }));
+    let why = match filmed {
+        Ok(Ok(())) => return,
+        Ok(Err(e)) => format!("{e:#}"),
+        Err(panic) => format!("panicked: {}", panic_message(&*panic)),
+    };
+    record.status = format!("failed: trajectory: {why}");
 }
 
 /// `--fresh`: forget the saved records and checkpoints of the picked runs

@@ -25,6 +25,7 @@ pub const CONFIRM_CPU_SECONDS: f64 = 3.6e6;
 /// Refuse a plan with a run that cannot finish; ask for `--yes` for one
 /// whose runs together take longer than `CONFIRM_CPU_SECONDS`.
 pub fn confirm_cost(loaded: &Loaded, specs: &[RunSpec], yes: bool) -> Result<(), DescriptorError> {
+    crate::runner::plan::trajectory::check(loaded, specs)?;
     let costs = estimate::by_point(specs);
     for (i, cost, _) in &costs {
         let Some(cost) = cost else { continue };

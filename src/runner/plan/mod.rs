@@ -9,6 +9,7 @@ pub mod error_bars;
 pub mod estimate;
 pub mod origin;
 pub mod seeds;
+pub mod trajectory;
 
 use crate::descriptor::errors::DescriptorError;
 use crate::descriptor::load::{Loaded, show};
