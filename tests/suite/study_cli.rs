@@ -1,19 +1,7 @@
 //! The `study` binary: exit codes and what users see on stderr.
 
-use crate::study_common::{PISTON, write_descriptor};
+use crate::study_common::{PISTON, study, write_descriptor};
 use std::process::Command;
-
-fn study(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_study"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 #[test]
 fn validate_prints_the_plan() {

@@ -13,6 +13,7 @@ use bonkers::runner::plan::plan;
 use bonkers::runner::store::read_parquet;
 use polars::prelude::DataFrame;
 use std::path::{Path, PathBuf};
+use std::process::Command;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 pub const PISTON: &str = r#"# A small piston study.
@@ -223,4 +224,17 @@ pub fn run_into(
 /// A scalar result over an ensemble's runs, from those that measured it finite.
 pub fn stats(runs: &[(RunSpec, RunOutput)], name: &str) -> bonkers::stats::summary::Stats {
     bonkers::stats::summary::scalar(runs.iter().map(|(_, o)| o), name)
+}
+
+/// `study ARGS`: its exit code, stdout and stderr.
+pub fn study(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_study"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
 }

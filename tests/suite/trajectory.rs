@@ -4,8 +4,8 @@
 //! files' contents are read back by gsd, ase and freud in
 //! tests/frames_check.py (CI).
 
+use crate::study_common::study;
 use std::path::Path;
-use std::process::Command;
 
 const DISKS: &str = r#"
 [study]
@@ -30,18 +30,6 @@ trajectory = { format = "gsd", every = 0.25, runs = [0, 2] }
 [quick]
 "observe.trajectory.format" = "xyz"
 "#;
-
-fn study(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_study"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 fn run(file: &Path, out: &Path, extra: &[&str]) {
     let mut args = vec!["run", file.to_str().unwrap(), "--quiet", "--out"];
