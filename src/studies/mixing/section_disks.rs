@@ -155,7 +155,7 @@ fn bulk_table(bulk_points: &[&Point]) -> String {
             count(p.collisions()),
         ]));
         let (eta, ratio) = (p.first("packing_fraction"), p.first("mass_ratio"));
-        let at = format!("η = {}, m_B/m_A = {}", num(eta), num(ratio));
+        let at = format!("η = {} (m_B/m_A = {})", num(eta), num(ratio));
         match z_score(&p.stat("diffusion_ratio"), 1.0) {
             Some(z) if z >= 4.0 => above.push(at),
             Some(z) if z <= -4.0 => below.push(at),
