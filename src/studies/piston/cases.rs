@@ -1,38 +1,21 @@
-//! The runs of a named `[[case]]`, as the piston's pictures use them: their
-//! outputs, statistics of their results, and what the first replica started
-//! from and recorded (its scene rebuilt from its seed, as the run built it:
-//! no simulation).
+//! A named `[[case]]`'s runs, as the piston's pictures use them, and what
+//! the first replica started from and recorded (its scene rebuilt from its
+//! seed, as the run built it: no simulation).
 
 use super::DRAWS;
 use super::state::{Geometry, Samples};
 use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
 use crate::scene::{self, Built};
-use crate::stats::summary::Stats;
+use crate::stats::ensemble::Runs;
+use crate::stats::point_runs::{PointRuns, by_point};
 use crate::theory::piston::PistonSystem;
 use crate::theory::piston_equilibrium::oscillator_share;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
-pub(super) type Run = (RunSpec, RunOutput);
-
-/// The runs of case `name`, in replica order.
-pub(super) fn runs<'a>(all: &'a [Run], name: &str) -> Vec<&'a Run> {
-    all.iter()
-        .filter(|(s, _)| s.case.as_deref() == Some(name))
-        .collect()
-}
-
-/// A result over the runs that measured it.
-pub(super) fn stat(runs: &[&Run], name: &str) -> Stats {
-    crate::stats::summary::scalar(runs.iter().map(|r| &r.1), name)
-}
-
-/// Collisions and CPU seconds the runs cost.
-pub(super) fn cost(runs: &[&Run]) -> (u64, f64) {
-    runs.iter().fold((0, 0.0), |(c, s), (_, o)| {
-        (c + o.collisions, s + o.cpu_seconds)
-    })
+/// The runs of case `name` (in replica order), if the plan has it.
+pub(super) fn case<'a>(all: &'a Runs, name: &str) -> Option<PointRuns<'a>> {
+    (by_point(all).into_iter()).find(|p| p.spec.case.as_deref() == Some(name))
 }
 
 /// A replica as the pictures draw it.
@@ -49,7 +32,9 @@ pub(super) struct First<'a, const D: usize> {
 }
 
 impl<'a, const D: usize> First<'a, D> {
-    pub fn of((spec, out): &'a Run) -> anyhow::Result<Self> {
+    /// The case's first replica.
+    pub fn of(case: &PointRuns<'a>) -> anyhow::Result<Self> {
+        let (spec, out) = (case.spec, case.outs[0]);
         let resolved = scene::resolve(&spec.descriptor.scene).map_err(anyhow::Error::msg)?;
         let mut rng = ChaCha8Rng::seed_from_u64(spec.seed);
         let built = scene::build::<D>(&resolved, &mut rng).map_err(anyhow::Error::msg)?;

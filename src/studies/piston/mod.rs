@@ -103,13 +103,9 @@ impl Study for Piston {
         RESULTS
     }
     fn writes(&self, d: &Descriptor) -> Vec<&'static str> {
+        // Rods have no axis across x: none of the last eight.
         let rods = crate::scene::resolve(&d.scene).is_ok_and(|s| s.dimension() == Ok(1));
-        RESULTS[..if rods {
-            RESULTS.len() - 8
-        } else {
-            RESULTS.len()
-        }]
-            .to_vec()
+        RESULTS[..RESULTS.len() - if rods { 8 } else { 0 }].to_vec()
     }
     fn per_run(&self, run: &Finished, out: &mut RunOutput) -> Result<(), String> {
         let geometry = match run.start {
@@ -260,6 +256,7 @@ fn across_x(
         g.relaxing(st)
             .frequency(st.with_gas_inertia().omega(Law::Adiabatic))
     });
+    let tau_exchange = relaxing.decay_time(relaxing.frequency(start.omega(Law::Adiabatic)));
     let excluded = [start.left, start.right]
         .iter()
         .map(|gas| gas.reach / gas.length() - 1.0)
@@ -271,21 +268,16 @@ fn across_x(
         ("omega_tau", start.omega(Law::Adiabatic) * tau),
         ("omega_exchange", omega_exchange),
         ("frequency_ratio_exchange", frequency / omega_exchange),
-        (
-            "relaxation_time_exchange",
-            relaxing.decay_time(relaxing.frequency(start.omega(Law::Adiabatic))),
-        ),
+        ("relaxation_time_exchange", tau_exchange),
         ("excluded_fraction", excluded),
     ]
 }
 
-/// Mean of the last `fraction` of a record (at least one sample).
+/// Mean of the last `fraction` of a record (at least one sample; NaN for
+/// none, as 0/0).
 fn late_mean(values: &[f64], fraction: f64) -> f64 {
     let n = values.len();
     let from = (((1.0 - fraction.clamp(0.0, 1.0)) * n as f64) as usize).min(n.saturating_sub(1));
-    if n == 0 {
-        return f64::NAN;
-    }
     values[from..].iter().sum::<f64>() / (n - from) as f64
 }
 
@@ -296,13 +288,9 @@ fn theory(d: &Descriptor, result: &str) -> Option<f64> {
     match result {
         "frequency_ratio" | "frequency_ratio_inertia" | "frequency_ratio_exchange" => Some(1.0),
         "piston_share" => {
-            let (d, [left, right]) = gas_counts(d)?;
-            Some(1.0 / degrees_of_freedom(d, left + right) as f64)
+            gas_counts(d).map(|(d, [l, r])| 1.0 / degrees_of_freedom(d, l + r) as f64)
         }
-        "oscillator_share" => {
-            let (d, [left, right]) = gas_counts(d)?;
-            Some(oscillator_share(d, left, right, DRAWS).0)
-        }
+        "oscillator_share" => gas_counts(d).map(|(d, [l, r])| oscillator_share(d, l, r, DRAWS).0),
         _ => None,
     }
 }
@@ -345,6 +333,9 @@ fn section(runs: &Runs, o: &Options) -> anyhow::Result<ReportSection> {
 }
 
 const METHODS: &str = include_str!("text/methods.md");
+/// The sweep's sentences and table heads, and the figures' captions, by name.
+const SWEEP: &str = include_str!("text/sweep.md");
+const CAPTIONS: &str = include_str!("text/captions.md");
 
 /// The settings the methods text states.
 fn methods_values(o: &Options) -> [(&'static str, String); 4] {

@@ -3,17 +3,19 @@
 //! over the first 40 time units and the whole run) with the adiabatic
 //! prediction drawn in, and his question answered in numbers.
 
+use super::CAPTIONS;
 use super::cases::{self, First};
 use crate::model::chart::{Layer, Paint};
 use crate::model::report::Figure;
+use crate::stats::ensemble::Runs;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
+use crate::stats::named::named;
 use crate::stats::summary::Stats;
 use crate::studies::curves::{figure, polyline, show};
 use crate::theory::piston::Law;
 use crate::theory::piston_equilibrium::degrees_of_freedom;
 use std::f64::consts::TAU;
-use std::fmt::Write;
 
 const BLUE: (u8, u8, u8) = (0, 114, 178);
 const GREEN: (u8, u8, u8) = (0, 158, 115);
@@ -22,9 +24,11 @@ pub(super) const BLACK: (u8, u8, u8) = (0, 0, 0);
 pub(super) const GREY: (u8, u8, u8) = (150, 150, 150);
 
 /// A predicted piston path (t, x), its colour and its legend.
-pub(super) type PredictedPath = (Vec<(f64, f64)>, (u8, u8, u8), &'static str);
+type PredictedPath = (Vec<(f64, f64)>, (u8, u8, u8), &'static str);
 
 const ANSWER: &str = include_str!("text/mackay.md");
+/// The answer's phrases that depend on the outcome, by name.
+const OUTCOMES: &str = include_str!("text/outcomes.md");
 
 fn colour(species: &str) -> (u8, u8, u8) {
     match species {
@@ -39,45 +43,40 @@ pub const CASE: &str = "mackay";
 
 /// MacKay's case from its runs: his question answered, and his pictures.
 /// Empty if the plan has no such case.
-pub fn mackay_case(all: &[cases::Run], figures: &mut Vec<Figure>) -> anyhow::Result<String> {
-    let replicas = cases::runs(all, CASE);
-    let Some(run) = replicas.first().copied() else {
+pub fn mackay_case(all: &Runs, figures: &mut Vec<Figure>) -> anyhow::Result<String> {
+    let Some(case) = cases::case(all, CASE) else {
         return Ok(String::new());
     };
-    let first = First::<1>::of(run)?;
-    let duration = run.0.descriptor.run.duration.unwrap_or(f64::NAN);
+    let first = First::<1>::of(&case)?;
+    let run = &case.spec.descriptor.run;
+    let duration = run.duration.unwrap_or(f64::NAN);
     let paths = [
         (Law::Adiabatic, BLACK, "adiabatic theory (γ = 3)"),
         (Law::Isothermal, GREY, "isothermal (γ = 1)"),
     ]
     .map(|(law, rgb, label)| (first.start.trajectory(law, duration, 0.02), rgb, label));
-    let run_settings = &run.0.descriptor.run;
-    let sample_every = run_settings.sample_every.unwrap_or(f64::NAN);
     let [left, right] = first.geometry.particles;
     let values = answer(
-        &|name| cases::stat(&replicas, name),
-        replicas.len(),
-        (duration, sample_every),
-        cases::cost(&replicas),
+        &|name| case.stat(name),
+        case.outs.len(),
+        (duration, run.sample_every.unwrap_or(f64::NAN)),
+        (case.collisions(), case.cpu()),
         (first.geometry.mass, degrees_of_freedom(1, left + right)),
     );
     let mut md = fill(ANSWER, &values);
     let horizons = [40.0_f64.min(duration), duration];
+    let caption =
+        |name, horizon: f64| fill(named(CAPTIONS, name), &[("horizon", horizon.to_string())]);
     for horizon in horizons {
-        let caption = format!(
-            "MacKay's case, first {horizon} time units: positions of all particles (time up; light gas blue, heavier gas green, piston purple) and the piston's path predicted by the adiabatic (black dashed) and isothermal (grey dashed) oscillators from the same start."
-        );
-        md += &show(figures, spacetime(&first, &paths, horizon), &caption);
+        let picture = spacetime(&first, &paths, horizon);
+        md += &show(figures, picture, &caption("spacetime", horizon));
     }
     for horizon in horizons {
-        let name = format!("mackay_energy_{horizon}.svg");
         let title =
             format!("Kinetic energy of each gas and of the piston, first {horizon} time units");
-        energies(&first, horizon, &title, &name, figures);
-        let _ = writeln!(
-            md,
-            "![Kinetic energy of the light gas (blue), the heavier gas (green) and the piston (purple) over the first {horizon} time units; dashed: the piston's oscillator energy (kinetic + adiabatic potential) and its equilibrium level.]({name})\n"
-        );
+        let name = format!("mackay_energy_{horizon}.svg");
+        let energy = energies(&first, horizon, title, &name);
+        md += &show(figures, energy, &caption("energy", horizon));
     }
     Ok(md)
 }
@@ -94,6 +93,8 @@ fn answer(
 ) -> Vec<(&'static str, String)> {
     let measured = stat("frequency");
     let period = |w: f64| TAU / w;
+    // A prediction's row of the table: its ω and its period.
+    let cells = |w: f64| format!("{} | {}", num(w), num(period(w)));
     let omega = |name: &str| stat(name).mean;
     let (ad, inertia) = (omega("omega_adiabatic"), omega("omega_adiabatic_inertia"));
     let (small, iso) = (omega("omega_adiabatic_small"), omega("omega_isothermal"));
@@ -106,12 +107,15 @@ fn answer(
     ]
     .map(stat);
     let both = |s: &Stats| pm(s.mean, s.stderr);
+    let pick = |yes: bool, this: &str, that: &str| (if yes { this } else { that }).to_string();
     let tau = stat("relaxation_time");
     let speed = stat("speed_ratio").mean;
     let harmonic = 100.0 * (small / ad - 1.0);
     let share = 100.0 * stat("initial_piston_share").mean;
     let measured_period = period(measured.mean);
     let period_error = measured.stderr * measured_period / measured.mean;
+    let within = (measured.mean / start - 1.0).abs() <= 4.0 * measured.stderr / start;
+    let adiabatic = fits(&ratios[0]) || fits(&ratios[1]);
     vec![
         ("share", format!("{share:.0}")),
         ("mass", num(mass)),
@@ -122,30 +126,17 @@ fn answer(
         ("sample_every", sample_every.to_string()),
         ("coll", count(collisions)),
         ("secs", format!("{seconds:.2}")),
+        ("harmonic", format!("{:.0}", harmonic.abs())),
+        ("side", pick(harmonic < 0.0, "below", "above")),
         (
-            "swing",
-            format!(
-                "at this energy the small-oscillation frequency is {:.0}% {} the nonlinear one, so the \
-                 oscillation is {}",
-                harmonic.abs(),
-                if harmonic < 0.0 { "below" } else { "above" },
-                if harmonic.abs() > 5.0 {
-                    "far from harmonic"
-                } else {
-                    "nearly harmonic"
-                }
-            ),
+            "shape",
+            pick(harmonic.abs() > 5.0, "far from harmonic", "nearly harmonic"),
         ),
-        ("ad", num(ad)),
-        ("pad", num(period(ad))),
-        ("inr", num(inertia)),
-        ("pinr", num(period(inertia))),
-        ("st", num(start)),
-        ("pst", num(period(start))),
-        ("sm", num(small)),
-        ("psm", num(period(small))),
-        ("iso", num(iso)),
-        ("piso", num(period(iso))),
+        ("ad", cells(ad)),
+        ("inr", cells(inertia)),
+        ("st", cells(start)),
+        ("sm", cells(small)),
+        ("iso", cells(iso)),
         ("n", measured.n.to_string()),
         ("meas", both(&measured)),
         ("pmeas", pm(measured_period, period_error)),
@@ -153,22 +144,26 @@ fn answer(
         ("r_in", both(&ratios[1])),
         ("r_iso", both(&ratios[2])),
         ("r_st", pm(measured.mean / start, measured.stderr / start)),
+        ("longer", format!("{:.1}", longer.abs())),
+        ("way", pick(longer < 0.0, "shorter", "longer")),
         (
-            "dev",
-            format!(
-                "{:.1}% {} than predicted ({})",
-                longer.abs(),
-                if longer < 0.0 { "shorter" } else { "longer" },
-                if (measured.mean / start - 1.0).abs() <= 4.0 * measured.stderr / start {
-                    "within four standard errors"
-                } else {
-                    "more than four standard errors off"
-                }
-            ),
+            "within",
+            pick(within, named(OUTCOMES, "within"), named(OUTCOMES, "off")),
         ),
         ("verdict", verdict(&ratios[0], &ratios[1], &ratios[2])),
         ("speed", num(speed)),
-        ("slow", slow(speed, fits(&ratios[0]) || fits(&ratios[1]))),
+        // Whether the compression is slow (peak piston speed below 0.3 of
+        // the gases' thermal speed) and whether the adiabatic frequency held.
+        ("pace", pick(speed < 0.3, "slow", "not slow")),
+        ("held", pick((speed < 0.3) == adiabatic, "and", "yet")),
+        (
+            "frequency",
+            pick(
+                adiabatic,
+                named(OUTCOMES, "holds"),
+                named(OUTCOMES, "departs"),
+            ),
+        ),
         ("tau", both(&tau)),
         ("taun", tau.n.to_string()),
         ("cycles", format!("{:.1}", tau.mean * measured.mean / TAU)),
@@ -180,50 +175,27 @@ fn fits(s: &Stats) -> bool {
     (s.mean - 1.0).abs() <= 4.0 * s.stderr
 }
 
-/// Whether the compression is slow (peak piston speed below 0.3 of the
-/// gases' thermal speed) and whether the adiabatic frequency held.
-fn slow(speed: f64, adiabatic: bool) -> String {
-    let pace = if speed < 0.3 { "slow" } else { "not slow" };
-    let held = match (speed < 0.3, adiabatic) {
-        (true, true) | (false, false) => "and",
-        _ => "yet",
-    };
-    let frequency = if adiabatic {
-        "the adiabatic frequency holds"
-    } else {
-        "the frequency departs from the adiabatic one"
-    };
-    format!(": the compression is {pace} (below 0.3 counts as slow), {held} {frequency}")
-}
-
 /// Which theory the measurement agrees with, by the error bar (4 standard errors).
 fn verdict(ad: &Stats, inertia: &Stats, iso: &Stats) -> String {
     let gap = |s: &Stats| format!("{:+.1}%", 100.0 * (s.mean - 1.0));
-    match (fits(ad), fits(inertia), fits(iso)) {
-        (true, _, false) => {
-            "The adiabatic prediction holds within the error bar; the isothermal one does not."
-                .into()
-        }
-        (false, true, false) => format!(
-            "The measured frequency is {} off the plain adiabatic prediction but agrees with it once the gases' inertia is added; the isothermal prediction is {} off.",
-            gap(ad),
-            gap(iso)
-        ),
-        (_, _, true) => {
-            "The error bar cannot tell the adiabatic prediction from the isothermal one.".into()
-        }
-        (false, false, false) => format!(
-            "No prediction holds within the error bar: the measured frequency is {} off the adiabatic one ({} with the gases' inertia) and {} off the isothermal one, closer to {}.",
-            gap(ad),
-            gap(inertia),
-            gap(iso),
-            if (ad.mean - 1.0).abs() < (iso.mean - 1.0).abs() {
-                "adiabatic"
-            } else {
-                "isothermal"
-            }
-        ),
-    }
+    let name = match (fits(ad), fits(inertia), fits(iso)) {
+        (true, _, false) => "adiabatic",
+        (false, true, false) => "inertia",
+        (_, _, true) => "unclear",
+        (false, false, false) => "none",
+    };
+    let closer = if (ad.mean - 1.0).abs() < (iso.mean - 1.0).abs() {
+        "adiabatic"
+    } else {
+        "isothermal"
+    };
+    let values = [
+        ("ad", gap(ad)),
+        ("inertia", gap(inertia)),
+        ("iso", gap(iso)),
+        ("closer", closer.into()),
+    ];
+    fill(named(OUTCOMES, name), &values)
 }
 
 /// MacKay's space-time diagram with the predicted piston paths.
@@ -256,15 +228,11 @@ fn spacetime(first: &First<1>, paths: &[PredictedPath], horizon: f64) -> Figure 
 pub(super) fn energies<const D: usize>(
     first: &First<D>,
     horizon: f64,
-    title: &str,
+    title: String,
     name: &str,
-    figures: &mut Vec<Figure>,
-) {
+) -> Figure {
     let before = |(t, e): (&f64, &f64)| (*t <= horizon).then_some((*t, *e));
-    let mut layers: Vec<Layer> = first
-        .out
-        .series
-        .iter()
+    let mut layers: Vec<Layer> = (first.out.series.iter())
         .filter_map(|s| {
             let species = s.observable.strip_prefix("kinetic_energy.")?;
             let points = s.t.iter().zip(&s.value).filter_map(before).collect();
@@ -279,8 +247,8 @@ pub(super) fn energies<const D: usize>(
     let equilibrium = vec![(0.0, first.equilibrium), (horizon, first.equilibrium)];
     let label = Some("its equilibrium mean".into());
     layers.push(polyline(equilibrium, Paint::solid(GREY), 1, true, label));
-    let labels = (title.to_string(), "time t", "kinetic energy");
-    figures.push(figure(name, labels, (false, false), layers));
+    let labels = (title, "time t", "kinetic energy");
+    figure(name, labels, (false, false), layers)
 }
 
 #[cfg(test)]
@@ -292,5 +260,19 @@ mod tests {
         let stat = |_: &str| Stats::of(&[0.9, 1.1]);
         let values = answer(&stat, 2, (200.0, 0.05), (10, 0.1), (40.0, 11));
         assert!(crate::stats::fill::unfilled(&fill(ANSWER, &values)).is_empty());
+    }
+
+    #[test]
+    fn every_verdict_has_its_text() {
+        let s = |mean: f64| Stats::of(&[mean - 0.001, mean + 0.001]);
+        for (ad, inertia, iso) in [
+            (1.0, 1.0, 1.5),
+            (0.9, 1.0, 1.5),
+            (1.0, 1.0, 1.0),
+            (0.9, 0.8, 1.5),
+        ] {
+            let text = verdict(&s(ad), &s(inertia), &s(iso));
+            assert!(!text.is_empty() && crate::stats::fill::unfilled(&text).is_empty());
+        }
     }
 }

@@ -1,15 +1,12 @@
 //! The piston sweep, point by point: each point's runs summarised (the
-//! statistics of every result the report shows, its cost), the points
-//! grouped by dimension and by the parameters other than the piston's mass,
-//! and drawn with their error bars.
+//! statistics of every result the report shows, its cost), and the points
+//! grouped by dimension and by the parameters other than the piston's mass.
 
-use crate::model::chart::{Layer, Paint};
 use crate::stats::decay::decay_bound;
 use crate::stats::ensemble::Runs;
 use crate::stats::groups::first_seen;
 use crate::stats::point_runs::{PointRuns, by_point};
 use crate::stats::summary::Stats;
-use std::collections::BTreeMap;
 
 const MASS_KEY: &str = "scene.piston.mass";
 const PRESET_KEY: &str = "scene.preset";
@@ -38,20 +35,19 @@ pub fn points(runs: &Runs) -> Vec<Point<'_>> {
         .filter(|p| p.spec.case.is_none())
         .map(|of| {
             let spec = of.spec;
-            let group: Vec<String> = spec
-                .params
-                .iter()
+            let group: Vec<String> = (spec.params.iter())
                 .filter(|(k, _)| k != MASS_KEY && k != PRESET_KEY)
                 .map(|(k, v)| format!("{}={v}", k.rsplit('.').next().unwrap_or(k)))
                 .collect();
+            let run = &spec.descriptor.run;
             Point {
                 id: spec.point_id,
                 dimension: of.scene().and_then(|s| s.dimension).unwrap_or(0),
                 group: group.join(", "),
                 mass: of.first("mass_ratio"),
                 runs: of.outs.len(),
-                duration: spec.descriptor.run.duration.unwrap_or(f64::NAN),
-                sample_every: spec.descriptor.run.sample_every.unwrap_or(f64::NAN),
+                duration: run.duration.unwrap_or(f64::NAN),
+                sample_every: run.sample_every.unwrap_or(f64::NAN),
                 equipartition: super::theory(&spec.descriptor, "piston_share").unwrap_or(f64::NAN),
                 seconds: of.outs.iter().map(|o| o.wall_seconds).sum(),
                 collisions: of.collisions(),
@@ -106,42 +102,13 @@ impl Point<'_> {
 }
 
 /// The points of each dimension, in order of dimension.
-pub fn by_dimension<'a, 'b>(points: &'a [Point<'b>]) -> Vec<(usize, Vec<&'a Point<'b>>)> {
-    let mut out: BTreeMap<usize, Vec<&Point>> = BTreeMap::new();
-    for p in points {
-        out.entry(p.dimension).or_default().push(p);
-    }
-    out.into_iter().collect()
+pub fn by_dimension<'a, 'b>(points: &'a [Point<'b>]) -> Vec<Vec<&'a Point<'b>>> {
+    let mut all = first_seen(points, |a, b| a.dimension == b.dimension);
+    all.sort_by_key(|d| d[0].dimension);
+    all
 }
 
 /// Groups of points (same parameters but the mass), in first-seen order.
-pub fn groups<'a, 'b>(points: &[&'a Point<'b>]) -> Vec<(String, Vec<&'a Point<'b>>)> {
+pub fn groups<'a, 'b>(points: &[&'a Point<'b>]) -> Vec<Vec<&'a Point<'b>>> {
     first_seen(points.iter().copied(), |a, b| a.group == b.group)
-        .into_iter()
-        .map(|g| (g[0].group.clone(), g))
-        .collect()
-}
-
-/// Points at (x, a result's statistics) as error bars (mean ± standard
-/// error; with `floor`, the lower end at least the mean over it, for a log
-/// axis) and markers.
-pub fn marked(at: &[(f64, Stats)], floor: Option<f64>, paint: Paint, label: String) -> [Layer; 2] {
-    let low = |s: &Stats| match floor {
-        Some(f) => (s.mean - s.stderr).max(s.mean / f),
-        None => s.mean - s.stderr,
-    };
-    let bars = at
-        .iter()
-        .map(|(x, s)| (*x, low(s), s.mean, s.mean + s.stderr));
-    [
-        Layer::ErrorBars {
-            bars: bars.collect(),
-            paint,
-        },
-        Layer::Markers {
-            points: at.iter().map(|(x, s)| (*x, s.mean)).collect(),
-            paint,
-            label: Some(label),
-        },
-    ]
 }

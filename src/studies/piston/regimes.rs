@@ -4,23 +4,20 @@
 //! with M; the long-time share against equipartition; each with its cost.
 //! One part per dimension the sweep holds.
 
-use super::Options;
-use crate::model::chart::{ChartSpec, Layer, Paint, colour};
+use super::{CAPTIONS, Options, SWEEP};
+use crate::model::chart::{Paint, colour};
 use crate::model::report::Figure;
 use crate::stats::ensemble::Runs;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
+use crate::stats::named::named;
 use crate::stats::summary::Stats;
-use crate::studies::piston::points::{Point, by_dimension, groups, marked, points};
+use crate::stats::table::table_row;
+use crate::studies::curves::{bar, figure, measured, polyline, show};
+use crate::studies::piston::points::{Point, by_dimension, groups, points};
 use crate::studies::piston::relaxation::relaxation;
 use std::f64::consts::{PI, TAU};
 use std::fmt::Write;
-
-const PARAMETERS: &str = include_str!("text/parameters.md");
-const PARAMETERS_ACROSS: &str = include_str!("text/parameters_2d.md");
-const TABLE: &str = include_str!("text/table.md");
-const TABLE_ACROSS: &str = include_str!("text/table_2d.md");
-const EQUIPARTITION: &str = include_str!("text/equipartition.md");
 
 /// How a frequency ratio compares with 1: holds (within 1% with two
 /// standard errors to spare), small deviation (significant, below 5%),
@@ -67,7 +64,8 @@ fn verdict_text(s: &Stats) -> String {
 pub fn regimes(runs: &Runs, o: &Options, figures: &mut Vec<Figure>) -> String {
     let all = points(runs);
     let mut md = String::new();
-    for (dimension, points) in by_dimension(&all) {
+    for points in by_dimension(&all) {
+        let dimension = points[0].dimension;
         let heading = match dimension {
             1 => "Rods (1D)",
             2 => "Disks beside a wall (2D)",
@@ -75,62 +73,40 @@ pub fn regimes(runs: &Runs, o: &Options, figures: &mut Vec<Figure>) -> String {
         };
         let across = dimension > 1;
         let _ = writeln!(md, "\n### {heading}: where the adiabatic theory holds\n");
-        md.push_str(&boundaries(&points, across));
-        let name = frequency_figure(&points, dimension, figures);
-        let _ = writeln!(
-            md,
-            "![{dimension}D: measured frequency over the nonlinear adiabatic prediction against the piston's mass over the gases' mass (mean ± standard error per sweep point); the curve is the gases'-inertia correction sqrt(M/(M + M_gas/3)) for small oscillations.]({name})\n"
-        );
-        md.push_str(&resolution(&points));
-        md.push_str(&table(&points, across));
-        let _ = writeln!(md, "\n### {heading}: how the piston relaxes\n");
-        md.push_str(&relaxation(&points, dimension, figures));
-        let _ = writeln!(md, "\n### {heading}: the long-time share\n");
-        md.push_str(&equipartition(&points, o.late));
-    }
-    md
-}
-
-/// Where the theory holds and breaks down, in terms of M/M_gas, the speed
-/// ratio and (across x) omega tau.
-fn boundaries(points: &[&Point], across: bool) -> String {
-    let mut md = String::new();
-    let judged_results = [
-        (
+        let judged = [
             "frequency_ratio",
-            "The adiabatic frequency (piston alone as the inertia)",
-        ),
-        (
             "frequency_ratio_inertia",
-            "With a third of the gases' mass added to the piston's, the adiabatic frequency",
-        ),
-        (
             "frequency_ratio_exchange",
-            "With the gases' inertia and their lag in sharing the compression (exchange theory), the frequency",
-        ),
-    ];
-    for (result, what) in &judged_results[..if across { 3 } else { 2 }] {
-        md.push_str(&boundary(points, result, what, across));
+        ];
+        for result in &judged[..if across { 3 } else { 2 }] {
+            md += &boundary(&points, result, across);
+        }
+        md = md + "\n" + &prose("parameters", across) + "\n\n";
+        let values = [("dimension", dimension.to_string())];
+        let caption = fill(named(CAPTIONS, "frequency"), &values);
+        md += &show(figures, frequency_figure(&points, dimension), &caption);
+        md += &resolution(&points);
+        md += &table(&points, across);
+        let _ = writeln!(md, "\n### {heading}: how the piston relaxes\n");
+        md += &relaxation(&points, dimension, figures);
+        let _ = writeln!(md, "\n### {heading}: the long-time share\n");
+        md += &equipartition(&points, o.late);
     }
-    md.push('\n');
-    md.push_str(&prose(PARAMETERS, PARAMETERS_ACROSS, across));
-    md.push_str("\n\n");
     md
 }
 
-/// A text, and where the gas has axes across x, what it adds there.
-fn prose(text: &str, across_text: &str, across: bool) -> String {
-    let mut md = text.trim_end().to_string();
+/// A sweep text, and where the gas has axes across x, what it adds there.
+fn prose(name: &str, across: bool) -> String {
+    let mut md = named(SWEEP, name).to_string();
     if across {
-        md.push(' ');
-        md.push_str(across_text.trim_end());
+        md = md + " " + named(SWEEP, &format!("{name}_across"));
     }
     md
 }
 
 /// One bullet: at how many points `result` holds, from which M/M_gas on,
 /// up to which piston speed (and omega tau), and how the others fail.
-fn boundary(points: &[&Point], result: &str, what: &str, across: bool) -> String {
+fn boundary(points: &[&Point], result: &str, across: bool) -> String {
     // (M/M_gas, speed ratio, omega tau, verdict) per point.
     let judged: Vec<(f64, f64, f64, Verdict)> = points
         .iter()
@@ -152,53 +128,39 @@ fn boundary(points: &[&Point], result: &str, what: &str, across: bool) -> String
     let breaks_to = (masses(Verdict::Breaks, true).filter(|&mu| mu < first_other))
         .fold(f64::NEG_INFINITY, f64::max);
     let holding = |f: fn(&(f64, f64, f64, Verdict)) -> f64| {
-        judged
-            .iter()
-            .filter(|j| j.3 == Verdict::Holds)
+        (judged.iter().filter(|j| j.3 == Verdict::Holds))
             .map(f)
             .fold(f64::NEG_INFINITY, f64::max)
     };
     let count_of = |v: Verdict| judged.iter().filter(|j| j.3 == v).count();
-    let mut md = format!(
-        "- {what} holds within 1% (two standard errors to spare) at {} of {} points",
-        count_of(Verdict::Holds),
-        judged.len()
+    // The part of the sentence named `name`, where its number x is finite.
+    let part = |name: &str, x: f64, more: String| match x.is_finite() {
+        true => fill(named(SWEEP, name), &[("x", num(x)), ("more", more)]),
+        false => String::new(),
+    };
+    let wt = part(
+        "omega_tau",
+        if across { holding(|j| j.2) } else { f64::NAN },
+        String::new(),
     );
-    if holds_from.is_finite() {
-        let _ = write!(md, ", at every point with M/M_gas ≥ {}", num(holds_from));
-    }
-    let fastest = holding(|j| j.1);
-    if fastest.is_finite() {
-        let _ = write!(
-            md,
-            " (piston speed up to {} of the gases' thermal speed",
-            num(fastest)
-        );
-        let wt = holding(|j| j.2);
-        if across && wt.is_finite() {
-            let _ = write!(md, ", ωτ_x up to {}", num(wt));
-        }
-        md.push(')');
-    }
-    for (verdict, label) in [
-        (
-            Verdict::Agrees,
-            "agrees within an error bar that would show 5%",
-        ),
-        (Verdict::Small, "small deviations (< 5%)"),
-        (Verdict::Breaks, "breaks down (> 5%)"),
-    ] {
-        let n = count_of(verdict);
-        if n > 0 {
-            let s = if n == 1 { "" } else { "s" };
-            let _ = write!(md, "; {label} at {n} point{s}");
-        }
-    }
-    if breaks_to.is_finite() {
-        let _ = write!(md, ", at every point with M/M_gas ≤ {}", num(breaks_to));
-    }
-    md.push_str(".\n");
-    md
+    let speed = part("speed", holding(|j| j.1), wt);
+    // Each verdict's phrase is the line of its name.
+    let others: String = [Verdict::Agrees, Verdict::Small, Verdict::Breaks]
+        .into_iter()
+        .map(|v| (count_of(v), named(SWEEP, &format!("{v:?}"))))
+        .filter(|(n, _)| *n > 0)
+        .map(|(n, phrase)| format!("; {phrase} at {n} point{}", if n == 1 { "" } else { "s" }))
+        .collect();
+    let values = [
+        ("what", named(SWEEP, result).to_string()),
+        ("held", count_of(Verdict::Holds).to_string()),
+        ("judged", judged.len().to_string()),
+        ("from", part("from", holds_from, String::new())),
+        ("speed", speed),
+        ("others", others),
+        ("to", part("to", breaks_to, String::new())),
+    ];
+    fill(named(SWEEP, "bullet"), &values) + "\n"
 }
 
 /// How well the sampling resolves the frequency at the worst point: linear
@@ -220,16 +182,15 @@ fn resolution(points: &[&Point]) -> String {
         .fold((f64::INFINITY, 0.0f64, 0.0f64), |w, v| {
             (w.0.min(v.0), w.1.max(v.1), w.2.max(v.2))
         });
-    if !worst.0.is_finite() {
-        return String::new();
+    let values = [
+        ("per_period", format!("{:.0}", worst.0)),
+        ("bound", format!("{:.1e}", worst.1)),
+        ("share", format!("{:.0}", 100.0 * worst.2)),
+    ];
+    match worst.0.is_finite() {
+        true => fill(named(SWEEP, "resolution"), &values) + "\n\n",
+        false => String::new(),
     }
-    format!(
-        "Sampling: at least {:.0} samples per measured period at every point, so interpolating the \
-         crossings limits the frequency to {:.1e} relative, at most {:.0}% of a point's standard error.\n\n",
-        worst.0,
-        worst.1,
-        100.0 * worst.2
-    )
 }
 
 /// A column of the per-point table: its header, whether only a gas with
@@ -241,8 +202,22 @@ fn both(p: &Point, name: &str) -> String {
     pm(p.stat(name).mean, p.stat(name).stderr)
 }
 
+/// With the runs that gave it, n of N.
+fn counted(p: &Point, name: &str) -> String {
+    format!("{} ({}/{})", both(p, name), p.stat(name).n, p.runs)
+}
+
 fn mean(p: &Point, name: &str) -> String {
     num(p.stat(name).mean)
+}
+
+/// The relaxation time, or where the runs ended first its lower bound.
+fn relaxation_cell(p: &Point, name: &str) -> String {
+    let (bound, n, runs) = (num(p.tau_bound()), p.stat(name).n, p.runs);
+    match p.relaxed() {
+        true => counted(p, name),
+        false => format!("> {bound} ({n}/{runs} reached 1/e)"),
+    }
 }
 
 const COLUMNS: &[Column] = &[
@@ -251,12 +226,7 @@ const COLUMNS: &[Column] = &[
     ("M/M_gas", false, "mass_over_gas", mean),
     ("v_piston/v_gas", false, "speed_ratio", mean),
     ("ωτ_x", true, "omega_tau", mean),
-    (
-        "ω/ω_adiabatic (n)",
-        false,
-        "frequency_ratio",
-        |p, name| format!("{} ({}/{})", both(p, name), p.stat(name).n, p.runs),
-    ),
+    ("ω/ω_adiabatic (n)", false, "frequency_ratio", counted),
     ("ω/ω_ad+inertia", false, "frequency_ratio_inertia", both),
     ("ω/ω_exchange", true, "frequency_ratio_exchange", both),
     ("ω/ω_γ=3", true, "frequency_ratio_collisionless", both),
@@ -264,19 +234,7 @@ const COLUMNS: &[Column] = &[
     ("adiabatic", false, "frequency_ratio", |p, name| {
         verdict_text(&p.stat(name))
     }),
-    ("τ relax (n)", false, "relaxation_time", |p, name| {
-        let tau = p.stat(name);
-        if p.relaxed() {
-            format!("{} ({}/{})", pm(tau.mean, tau.stderr), tau.n, p.runs)
-        } else {
-            format!(
-                "> {} ({}/{} reached 1/e)",
-                num(p.tau_bound()),
-                tau.n,
-                p.runs
-            )
-        }
-    }),
+    ("τ relax (n)", false, "relaxation_time", relaxation_cell),
     ("τ exchange", true, "relaxation_time_exchange", mean),
     ("excess left", false, "excess_left", both),
     (
@@ -292,63 +250,40 @@ const COLUMNS: &[Column] = &[
 /// Every point's results, one row each.
 fn table(points: &[&Point], across: bool) -> String {
     let columns: Vec<&Column> = COLUMNS.iter().filter(|c| across || !c.1).collect();
-    let mut md = prose(TABLE, TABLE_ACROSS, across);
-    let headers: Vec<&str> = columns.iter().map(|c| c.0).collect();
-    let _ = write!(
-        md,
-        "\n\n| {} |\n|{}\n",
-        headers.join(" | "),
-        "---|".repeat(columns.len())
-    );
+    let row = |cell: &dyn Fn(&Column) -> String| {
+        table_row(&columns.iter().map(|c| cell(c)).collect::<Vec<_>>())
+    };
+    let mut md = prose("table", across) + "\n\n" + &row(&|c| c.0.to_string());
+    md = md + "|" + &"---|".repeat(columns.len()) + "\n";
     for p in points {
-        let cells: Vec<String> = columns.iter().map(|c| (c.3)(p, c.2)).collect();
-        let _ = writeln!(md, "| {} |", cells.join(" | "));
+        md += &row(&|c| (c.3)(p, c.2));
     }
     md
 }
 
-fn frequency_figure(points: &[&Point], dimension: usize, figures: &mut Vec<Figure>) -> String {
+/// Measured over adiabatic frequency against M/M_gas, a colour per group,
+/// with the gases'-inertia correction across the masses swept.
+fn frequency_figure(points: &[&Point], dimension: usize) -> Figure {
     let mut layers = Vec::new();
-    for (i, (group, ps)) in groups(points).into_iter().enumerate() {
-        let at: Vec<(f64, Stats)> = (ps.iter())
-            .map(|p| (p.stat("mass_over_gas").mean, p.stat("frequency_ratio")))
-            .collect();
-        layers.extend(marked(&at, None, colour(i), group));
+    for (i, ps) in groups(points).into_iter().enumerate() {
+        let at = |p: &&Point| bar(p.stat("mass_over_gas").mean, &p.stat("frequency_ratio"));
+        layers.extend(measured(ps.iter().map(at), colour(i), &ps[0].group));
     }
-    let mus: Vec<f64> = points
-        .iter()
-        .map(|p| p.stat("mass_over_gas").mean)
+    let (lo, hi) = (points.iter().map(|p| p.stat("mass_over_gas").mean))
         .filter(|m| m.is_finite() && *m > 0.0)
-        .collect();
-    let lo = mus.iter().copied().fold(f64::INFINITY, f64::min);
-    let hi = mus.iter().copied().fold(0.0, f64::max);
-    if hi > lo {
-        layers.push(Layer::Line {
-            points: (0..=100)
-                .map(|k| {
-                    let mu = lo * (hi / lo).powf(k as f64 / 100.0);
-                    (mu, (mu / (mu + 1.0 / 3.0)).sqrt())
-                })
-                .collect(),
-            paint: Paint::solid((0, 0, 0)),
-            width: 1,
-            dashed: true,
-            label: Some("gas inertia: sqrt(M/(M + M_gas/3))".into()),
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), m| {
+            (lo.min(m), hi.max(m))
         });
+    if hi > lo {
+        let mus = (0..=100).map(|k| lo * (hi / lo).powf(k as f64 / 100.0));
+        let curve = mus.map(|mu| (mu, (mu / (mu + 1.0 / 3.0)).sqrt())).collect();
+        let label = Some("gas inertia: sqrt(M/(M + M_gas/3))".into());
+        layers.push(polyline(curve, Paint::solid((0, 0, 0)), 1, true, label));
     }
     let name = format!("piston_frequency_ratio_{dimension}d.svg");
-    figures.push(Figure {
-        file: name.clone(),
-        chart: ChartSpec {
-            title: format!("{dimension}D: measured over adiabatic frequency"),
-            x_label: "piston mass / gas mass, M/M_gas".into(),
-            y_label: "ω / ω_adiabatic".into(),
-            x_log: true,
-            layers,
-            ..Default::default()
-        },
-    });
-    name
+    let title = format!("{dimension}D: measured over adiabatic frequency");
+    let labels = (title, "piston mass / gas mass, M/M_gas", "ω / ω_adiabatic");
+    figure(&name, labels, (true, false), layers)
 }
 
 /// The piston's late share of the kinetic energy against 1/N_free, at the
@@ -364,48 +299,41 @@ fn equipartition(points: &[&Point], late: f64) -> String {
         ("settled", settled.len().to_string()),
         ("points", points.len().to_string()),
     ];
-    let mut md = fill(EQUIPARTITION, &values);
+    let mut md = fill(named(SWEEP, "equipartition"), &values) + "\n\n";
     if settled.is_empty() {
         return md;
     }
-    md.push_str(
-        "| point | parameters | piston share | 1/N_free | share × N_free | z | oscillator share (× N_free) | CPU s |\n|---|---|---|---|---|---|---|---|\n",
-    );
-    let mut within = 0;
-    let mut oscillator = 0.0;
+    md = md + named(SWEEP, "shares") + "\n|" + &"---|".repeat(8) + "\n";
+    let (mut within, mut oscillator) = (0, 0.0);
     for p in &settled {
-        let share = p.stat("piston_share");
+        let (share, osc) = (p.stat("piston_share"), p.stat("oscillator_share"));
         let z = (share.mean - p.equipartition) / share.stderr;
         within += usize::from(z.abs() < 4.0);
-        let osc = p.stat("oscillator_share");
         oscillator += osc.mean / p.equipartition / settled.len() as f64;
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {} | {} | {:+.1} | {} | {:.2} |",
-            p.id,
+        let per_free = |s: &Stats| pm(s.mean / p.equipartition, s.stderr / p.equipartition);
+        md += &table_row(&[
+            p.id.to_string(),
             p.label(),
             pm(share.mean, share.stderr),
             num(p.equipartition),
-            pm(share.mean / p.equipartition, share.stderr / p.equipartition),
-            z,
-            pm(osc.mean / p.equipartition, osc.stderr / p.equipartition),
-            p.seconds
-        );
+            per_free(&share),
+            format!("{z:+.1}"),
+            per_free(&osc),
+            format!("{:.2}", p.seconds),
+        ]);
     }
-    let _ = writeln!(
-        md,
-        "\n{within} of {} agree with 1/N_free within four standard errors. The oscillator share (its kinetic \
-         plus adiabatic potential energy, per 1/N_free) averages {} degrees of freedom over these points (a \
-         harmonic oscillator's is two); the summary table sets it beside its microcanonical mean.\n",
-        settled.len(),
-        num(oscillator)
-    );
-    md
+    let values = [
+        ("within", within.to_string()),
+        ("settled", settled.len().to_string()),
+        ("dof", num(oscillator)),
+    ];
+    md + "\n" + &fill(named(SWEEP, "agreement"), &values) + "\n\n"
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::stats::fill::unfilled;
 
     #[test]
     fn verdicts() {
@@ -431,6 +359,6 @@ mod tests {
             ("settled", "1".into()),
             ("points", "2".into()),
         ];
-        assert!(crate::stats::fill::unfilled(&fill(EQUIPARTITION, &values)).is_empty());
+        assert!(unfilled(&fill(named(SWEEP, "equipartition"), &values)).is_empty());
     }
 }

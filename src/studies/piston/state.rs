@@ -170,14 +170,11 @@ impl Samples {
             right: get("gas_energy.right")?.value.clone(),
             total: get("kinetic_energy")?.value.clone(),
         };
-        let n = samples.t.len();
-        let series = [
-            &samples.piston,
-            &samples.left,
-            &samples.right,
-            &samples.total,
-        ];
-        if series.iter().any(|v| v.len() != n) {
+        let (s, n) = (&samples, samples.t.len());
+        if [&s.piston, &s.left, &s.right, &s.total]
+            .iter()
+            .any(|v| v.len() != n)
+        {
             return Err("the piston series have different lengths".into());
         }
         if n < 2 {
