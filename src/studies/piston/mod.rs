@@ -320,10 +320,9 @@ fn gas_counts(d: &Descriptor) -> Option<(usize, [usize; 2])> {
 fn section(runs: &Runs, o: &Options) -> anyhow::Result<ReportSection> {
     let mut figures = Vec::new();
     let mut md = pictures::mackay_case(runs, &mut figures)?;
-    md.push_str(&wall::wall_cases(runs, &mut figures)?);
-    md.push_str(&regimes::regimes(runs, o, &mut figures));
-    md.push('\n');
-    md.push_str(&fill(METHODS, &methods_values(o)));
+    md += &wall::wall_cases(runs, &mut figures)?;
+    md += &regimes::regimes(runs, o, &mut figures);
+    md = md + "\n" + &fill(METHODS, &methods_values(o));
     Ok(ReportSection {
         title: "Piston: oscillation and dissipation".into(),
         markdown: md,

@@ -13,7 +13,6 @@ const PRESET_KEY: &str = "scene.preset";
 
 /// One sweep point's runs, summarised.
 pub struct Point<'a> {
-    pub id: u64,
     pub dimension: usize,
     /// Swept parameters other than the piston mass and the preset
     /// ("energy=10, per_side=5").
@@ -25,8 +24,7 @@ pub struct Point<'a> {
     /// 1/N_free.
     pub equipartition: f64,
     pub seconds: f64,
-    pub collisions: u64,
-    of: PointRuns<'a>,
+    pub of: PointRuns<'a>,
 }
 
 /// The sweep's points in order of their ids (cases are not the sweep's).
@@ -41,7 +39,6 @@ pub fn points(runs: &Runs) -> Vec<Point<'_>> {
                 .collect();
             let run = &spec.descriptor.run;
             Point {
-                id: spec.point_id,
                 dimension: of.scene().and_then(|s| s.dimension).unwrap_or(0),
                 group: group.join(", "),
                 mass: of.first("mass_ratio"),
@@ -50,7 +47,6 @@ pub fn points(runs: &Runs) -> Vec<Point<'_>> {
                 sample_every: run.sample_every.unwrap_or(f64::NAN),
                 equipartition: super::theory(&spec.descriptor, "piston_share").unwrap_or(f64::NAN),
                 seconds: of.outs.iter().map(|o| o.wall_seconds).sum(),
-                collisions: of.collisions(),
                 of,
             }
         })

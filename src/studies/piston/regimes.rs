@@ -221,7 +221,7 @@ fn relaxation_cell(p: &Point, name: &str) -> String {
 }
 
 const COLUMNS: &[Column] = &[
-    ("point", false, "", |p, _| p.id.to_string()),
+    ("point", false, "", |p, _| p.of.spec.point_id.to_string()),
     ("parameters", false, "", |p, _| p.label()),
     ("M/M_gas", false, "mass_over_gas", mean),
     ("v_piston/v_gas", false, "speed_ratio", mean),
@@ -244,7 +244,7 @@ const COLUMNS: &[Column] = &[
         |p, name| format!("{} / {}", both(p, name), num(p.equipartition)),
     ),
     ("CPU s", false, "", |p, _| format!("{:.2}", p.seconds)),
-    ("collisions", false, "", |p, _| count(p.collisions)),
+    ("collisions", false, "", |p, _| count(p.of.collisions())),
 ];
 
 /// Every point's results, one row each.
@@ -271,9 +271,7 @@ fn frequency_figure(points: &[&Point], dimension: usize) -> Figure {
     }
     let (lo, hi) = (points.iter().map(|p| p.stat("mass_over_gas").mean))
         .filter(|m| m.is_finite() && *m > 0.0)
-        .fold((f64::INFINITY, 0.0f64), |(lo, hi), m| {
-            (lo.min(m), hi.max(m))
-        });
+        .fold((f64::INFINITY, 0.0f64), |(l, h), m| (l.min(m), h.max(m)));
     if hi > lo {
         let mus = (0..=100).map(|k| lo * (hi / lo).powf(k as f64 / 100.0));
         let curve = mus.map(|mu| (mu, (mu / (mu + 1.0 / 3.0)).sqrt())).collect();
@@ -312,7 +310,7 @@ fn equipartition(points: &[&Point], late: f64) -> String {
         oscillator += osc.mean / p.equipartition / settled.len() as f64;
         let per_free = |s: &Stats| pm(s.mean / p.equipartition, s.stderr / p.equipartition);
         md += &table_row(&[
-            p.id.to_string(),
+            p.of.spec.point_id.to_string(),
             p.label(),
             pm(share.mean, share.stderr),
             num(p.equipartition),

@@ -106,7 +106,7 @@ fn one_group(i: usize, ps: &[&Point], across: bool, layers: &mut Vec<Layer>) -> 
     }
     let seconds: f64 = relaxed.iter().map(|p| p.seconds).sum();
     cells.push(format!("{seconds:.1}"));
-    cells.push(count(relaxed.iter().map(|p| p.collisions).sum()));
+    cells.push(count(relaxed.iter().map(|p| p.of.collisions()).sum()));
     table_row(&cells)
 }
 

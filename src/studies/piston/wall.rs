@@ -52,9 +52,7 @@ const RATIOS: [&str; 5] = [
 /// Both cases from their runs: pictures, predictions against measurements,
 /// costs, one column per case. Empty if the plan has neither.
 pub fn wall_cases(all: &Runs, figures: &mut Vec<Figure>) -> anyhow::Result<String> {
-    let mut titles = Vec::new();
-    let mut columns = Vec::new();
-    let mut pictures = String::new();
+    let (mut titles, mut columns, mut pictures) = (Vec::new(), Vec::new(), String::new());
     for (name, title) in CASES {
         let Some(case) = cases::case(all, name) else {
             continue;
