@@ -108,6 +108,8 @@ fn answer(
     .map(stat);
     let both = |s: &Stats| pm(s.mean, s.stderr);
     let pick = |yes: bool, this: &str, that: &str| (if yes { this } else { that }).to_string();
+    // The same between two of the answer's phrases, by name.
+    let phrase = |yes, this, that| pick(yes, named(OUTCOMES, this), named(OUTCOMES, that));
     let tau = stat("relaxation_time");
     let speed = stat("speed_ratio").mean;
     let harmonic = 100.0 * (small / ad - 1.0);
@@ -128,10 +130,7 @@ fn answer(
         ("secs", format!("{seconds:.2}")),
         ("harmonic", format!("{:.0}", harmonic.abs())),
         ("side", pick(harmonic < 0.0, "below", "above")),
-        (
-            "shape",
-            pick(harmonic.abs() > 5.0, "far from harmonic", "nearly harmonic"),
-        ),
+        ("shape", phrase(harmonic.abs() > 5.0, "far", "nearly")),
         ("ad", cells(ad)),
         ("inr", cells(inertia)),
         ("st", cells(start)),
@@ -146,24 +145,14 @@ fn answer(
         ("r_st", pm(measured.mean / start, measured.stderr / start)),
         ("longer", format!("{:.1}", longer.abs())),
         ("way", pick(longer < 0.0, "shorter", "longer")),
-        (
-            "within",
-            pick(within, named(OUTCOMES, "within"), named(OUTCOMES, "off")),
-        ),
+        ("within", phrase(within, "within", "off")),
         ("verdict", verdict(&ratios[0], &ratios[1], &ratios[2])),
         ("speed", num(speed)),
         // Whether the compression is slow (peak piston speed below 0.3 of
         // the gases' thermal speed) and whether the adiabatic frequency held.
         ("pace", pick(speed < 0.3, "slow", "not slow")),
         ("held", pick((speed < 0.3) == adiabatic, "and", "yet")),
-        (
-            "frequency",
-            pick(
-                adiabatic,
-                named(OUTCOMES, "holds"),
-                named(OUTCOMES, "departs"),
-            ),
-        ),
+        ("frequency", phrase(adiabatic, "holds", "departs")),
         ("tau", both(&tau)),
         ("taun", tau.n.to_string()),
         ("cycles", format!("{:.1}", tau.mean * measured.mean / TAU)),

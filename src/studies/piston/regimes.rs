@@ -138,12 +138,12 @@ fn boundary(points: &[&Point], result: &str, across: bool) -> String {
         true => fill(named(SWEEP, name), &[("x", num(x)), ("more", more)]),
         false => String::new(),
     };
-    let wt = part(
-        "omega_tau",
-        if across { holding(|j| j.2) } else { f64::NAN },
-        String::new(),
+    let wt = if across { holding(|j| j.2) } else { f64::NAN };
+    let speed = part(
+        "speed",
+        holding(|j| j.1),
+        part("omega_tau", wt, String::new()),
     );
-    let speed = part("speed", holding(|j| j.1), wt);
     // Each verdict's phrase is the line of its name.
     let others: String = [Verdict::Agrees, Verdict::Small, Verdict::Breaks]
         .into_iter()
