@@ -56,18 +56,15 @@ fn lengths<'a>(all: &'a [Group], scene: &str) -> Vec<&'a Group> {
 /// The section's statistics part for every scene with exact runs of at
 /// least two lengths (empty if there is none).
 pub fn effort(all: &[Group], scenes: &[String]) -> String {
-    let mut md = String::new();
-    for scene in scenes {
-        let runs = lengths(all, scene);
-        if runs.len() < 2 {
-            continue;
-        }
-        if md.is_empty() {
-            md.push_str(INTRO);
-        }
-        md.push_str(&one(scene, &runs));
+    let parts: String = (scenes.iter())
+        .map(|scene| (scene, lengths(all, scene)))
+        .filter(|(_, runs)| runs.len() >= 2)
+        .map(|(scene, runs)| one(scene, &runs))
+        .collect();
+    if parts.is_empty() {
+        return parts;
     }
-    md
+    INTRO.to_string() + &parts
 }
 
 fn one(scene: &str, runs: &[&Group]) -> String {

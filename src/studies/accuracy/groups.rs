@@ -41,7 +41,7 @@ pub struct Group {
 /// order.
 pub fn groups(runs: &Runs) -> Vec<Group> {
     (by_point(runs).iter())
-        .filter(|p| !super::headlines::is_headline(p.spec))
+        .filter(|p| super::headlines::model_of(p.spec).is_none())
         .map(group)
         .collect()
 }

@@ -70,16 +70,10 @@ impl Length<'_> {
 }
 
 /// The study other than this one with an error model for a run's
-/// descriptor, and the model.
-fn model_of(spec: &RunSpec) -> Option<(&'static str, ErrorModel)> {
+/// descriptor, and the model: a run with one belongs to a headline case.
+pub fn model_of(spec: &RunSpec) -> Option<(&'static str, ErrorModel)> {
     (crate::studies::error_models(&spec.descriptor).into_iter())
         .find(|(name, _)| *name != "accuracy")
-}
-
-/// Whether a run belongs to a headline case: its descriptor names a study
-/// other than this one that has an error model for it.
-pub fn is_headline(spec: &RunSpec) -> bool {
-    model_of(spec).is_some()
 }
 
 /// The headline cases' points, in plan order.
@@ -114,12 +108,6 @@ pub fn lengths(runs: &Runs) -> Vec<Length<'_>> {
         .collect()
 }
 
-/// The studies with headline runs, in plan order.
-fn studies(all: &[Length]) -> Vec<&'static str> {
-    let groups = first_seen(all.iter().map(|l| l.study), |a, b| a == b);
-    groups.into_iter().map(|g| g[0]).collect()
-}
-
 /// The groups of one study with at least two values, in plan order.
 fn of<'a, 'b>(all: &'a [Length<'b>], study: &str) -> Vec<&'a Length<'b>> {
     all.iter()
@@ -134,11 +122,8 @@ fn series<'a, 'b>(groups: &[&'a Length<'b>]) -> Vec<&'a Length<'b>> {
     let Some(most) = groups.iter().max_by_key(|g| same(g)) else {
         return Vec::new();
     };
-    let mut v: Vec<&Length> = groups
-        .iter()
-        .copied()
-        .filter(|g| g.scene == most.scene)
-        .collect();
+    let mut v = groups.to_vec();
+    v.retain(|g| g.scene == most.scene);
     v.sort_by(|a, b| a.duration.total_cmp(&b.duration));
     v
 }
@@ -155,7 +140,9 @@ fn cheapest<'a, 'b>(lengths: &[&'a Length<'b>]) -> Option<&'a Length<'b>> {
 /// The markdown part (empty without headline runs) and its figure.
 pub fn part(runs: &Runs) -> (String, Option<Figure>) {
     let all = lengths(runs);
-    let names = studies(&all);
+    // The studies with headline runs, in plan order.
+    let studies = first_seen(all.iter().map(|l| l.study), |a, b| a == b);
+    let names: Vec<&str> = studies.into_iter().map(|g| g[0]).collect();
     if names.is_empty() {
         return (String::new(), None);
     }
@@ -194,9 +181,7 @@ fn one(study: &str, groups: &[&Length]) -> String {
     }
     let _ = writeln!(md, "\nModel ({}): {}.", first.name, first.model.basis);
     let lengths = series(groups);
-    if let Some(extra) = correlation(study, groups) {
-        md.push_str(&extra);
-    }
+    md.push_str(&correlation(study, groups));
     md.push_str(&along_length(&lengths, first.model.length_exponent));
     let Some(best) = cheapest(&lengths) else {
         return md;
@@ -303,9 +288,9 @@ fn planning(best: &Length) -> String {
 
 /// The pressure's correlation time from the block analysis of each run,
 /// and what it does to the error: shown, not hidden.
-fn correlation(study: &str, groups: &[&Length]) -> Option<String> {
+fn correlation(study: &str, groups: &[&Length]) -> String {
     if study != "pressure" {
-        return None;
+        return String::new();
     }
     let mut md = format!("\n{}", head("blocks", &[]));
     let mut single = true;
@@ -335,7 +320,7 @@ fn correlation(study: &str, groups: &[&Length]) -> Option<String> {
         named(VERDICTS, "blocks"),
         named(VERDICTS, blocks)
     );
-    Some(md)
+    md
 }
 
 /// The sampling interval of a run's pressure series.

@@ -119,9 +119,8 @@ fn findings(all: &[Group], scenes: &[String]) -> Vec<String> {
     let mut lines = Vec::new();
     for scene in scenes {
         let naive = steps(all, scene, Integrator::FixedStepNaive);
-        if let Some(line) = sticking(scene, &naive, &steps(all, scene, Integrator::FixedStep)) {
-            lines.push(line);
-        }
+        let fixed = steps(all, scene, Integrator::FixedStep);
+        lines.extend(sticking(scene, &naive, &fixed));
     }
     let fixed = all.iter().filter(|g| g.integrator == Integrator::FixedStep);
     let drift = fixed.clone().map(|g| g.energy_drift).fold(0.0, f64::max);
@@ -160,15 +159,15 @@ fn sticking(scene: &str, naive: &[&Group], fixed: &[&Group]) -> Option<String> {
     let (first, last) = (naive.first()?, naive.last()?);
     let stuck = |g: &&Group| g.stuck > 0.0;
     let w = worst(naive)?;
+    let clean = naive.iter().take_while(|g| !stuck(g)).last();
     let mut values = vec![
         ("scene", scene.to_string()),
         ("first", num(first.dt)),
         ("last", num(last.dt)),
         ("worst", num(w.stuck)),
         ("worst_dt", num(w.dt)),
+        ("clean", clean.map_or(String::new(), |g| num(g.dt))),
     ];
-    let clean = naive.iter().take_while(|g| !stuck(g)).last();
-    values.push(("clean", clean.map_or(String::new(), |g| num(g.dt))));
     let naive_text = match (naive.iter().any(stuck), clean) {
         (false, _) => "naive_none",
         (true, None) => "naive_all",
@@ -316,16 +315,13 @@ fn table(scene: &str, all: &[Group]) -> String {
             .cmp(&(b.integrator as u8))
             .then(a.dt.total_cmp(&b.dt))
     });
-    let err = |a: &Stats, b: Option<&Stats>| match b.and_then(|b| error(a, b)) {
-        Some((e, se)) => format!("{} %", pm(100.0 * e, 100.0 * se)),
-        None => "–".into(),
+    let err = |a: &Stats, b: Option<&Stats>| {
+        let e = b.and_then(|b| error(a, b));
+        e.map_or("–".into(), |(e, se)| format!("{} %", pm(100.0 * e, 100.0 * se)))
     };
-    let stat = |s: &Stats| {
-        if s.n == 0 {
-            "–".to_string()
-        } else {
-            pm(s.mean, s.stderr)
-        }
+    let stat = |s: &Stats| match s.n {
+        0 => "–".into(),
+        _ => pm(s.mean, s.stderr),
     };
     let compared: [fn(&Group) -> &Stats; 3] =
         [|g| &g.pressure, |g| &g.collision_rate, |g| &g.frequency];

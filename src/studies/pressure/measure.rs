@@ -20,6 +20,7 @@ use crate::model::run_output::RunOutput;
 use crate::observe::Context;
 use crate::stats::blocking::{blocked, drift};
 use crate::stats::mser;
+use crate::stats::summary::Stats;
 
 /// What one run adds.
 pub struct Measured {
@@ -101,7 +102,7 @@ pub fn measure<const D: usize>(
     if let Some((z, dt)) = main {
         let cut = mser::cut(z);
         let kept = &z[cut..];
-        m.z = mean(kept);
+        m.z = Stats::of(kept).mean;
         m.cut_time = cut as f64 * dt;
         measured_time = kept.len() as f64 * dt;
         if let Some(b) = blocked(kept) {
@@ -112,10 +113,10 @@ pub fn measure<const D: usize>(
         m.drift = drift(kept);
         // The series' means over the same kept stretch.
         if let Some((w, _)) = &wall {
-            m.z_wall = mean(&w[cut..]);
+            m.z_wall = Stats::of(&w[cut..]).mean;
         }
         if let Some((v, _)) = &virial {
-            m.z_virial = mean(&v[cut..]);
+            m.z_virial = Stats::of(&v[cut..]).mean;
         }
     } else {
         m.z = z_wall_scalar.or(z_virial_scalar).ok_or(
@@ -129,10 +130,6 @@ pub fn measure<const D: usize>(
         _ => m.block_stderr,
     };
     Ok(m)
-}
-
-fn mean(x: &[f64]) -> f64 {
-    x.iter().sum::<f64>() / x.len() as f64
 }
 
 /// The standard error of Z of equal rods of mass `mass` between walls, a

@@ -179,8 +179,7 @@ pub(super) mod tests {
                 mean: z,
                 std: err * 8f64.sqrt(),
                 stderr: err,
-                ci_low: f64::NAN,
-                ci_high: f64::NAN,
+                ..Stats::of(&[])
             },
             block_stderr: err,
             run_stderr: err,

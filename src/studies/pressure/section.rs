@@ -105,22 +105,14 @@ fn range(v: &[f64]) -> [String; 2] {
 /// Up to four runs for the pressure-against-time figure: a rod point, the
 /// walled disks (wall pressure), a disk and a sphere point.
 fn time_examples(all: &[Point]) -> Vec<(&Point, &str)> {
-    let pick = |f: &dyn Fn(&Point) -> bool| all.iter().filter(|p| f(p)).last();
-    [
-        (pick(&|p| p.dimension == 1), "rods, walls"),
-        (pick(&|p| p.dimension == 2 && p.walls), "disks, walls"),
-        (
-            pick(&|p| p.dimension == 2 && !p.walls && p.particles < 1000),
-            "disks, virial",
-        ),
-        (
-            pick(&|p| p.dimension == 3 && phases::is_fluid(3, p.eta)),
-            "spheres, virial",
-        ),
-    ]
-    .into_iter()
-    .filter_map(|(p, label)| Some((p?, label)))
-    .collect()
+    let picks: [(&str, fn(&Point) -> bool); 4] = [
+        ("rods, walls", |p| p.dimension == 1),
+        ("disks, walls", |p| p.dimension == 2 && p.walls),
+        ("disks, virial", |p| p.dimension == 2 && !p.walls && p.particles < 1000),
+        ("spheres, virial", |p| p.dimension == 3 && phases::is_fluid(3, p.eta)),
+    ];
+    let last = |f: fn(&Point) -> bool| all.iter().filter(|p| f(p)).last();
+    (picks.iter()).filter_map(|&(label, f)| Some((last(f)?, label))).collect()
 }
 
 /// The periodic disks of the largest N with at least 1000 disks, from
