@@ -130,11 +130,10 @@ fn series<'a, 'b>(groups: &[&'a Length<'b>]) -> Vec<&'a Length<'b>> {
 
 /// The length whose error costs least (σ₁² c smallest).
 fn cheapest<'a, 'b>(lengths: &[&'a Length<'b>]) -> Option<&'a Length<'b>> {
-    lengths
-        .iter()
-        .copied()
+    let cost = |l: &Length| l.scatter().powi(2) * l.cpu;
+    (lengths.iter().copied())
         .filter(|l| l.cpu > 0.0 && l.scatter() > 0.0)
-        .min_by(|a, b| (a.scatter().powi(2) * a.cpu).total_cmp(&(b.scatter().powi(2) * b.cpu)))
+        .min_by(|a, b| cost(a).total_cmp(&cost(b)))
 }
 
 /// The markdown part (empty without headline runs) and its figure.
@@ -314,12 +313,8 @@ fn correlation(study: &str, groups: &[&Length]) -> String {
     } else {
         "blocks_longer"
     };
-    let _ = writeln!(
-        md,
-        "\n{} {}",
-        named(VERDICTS, "blocks"),
-        named(VERDICTS, blocks)
-    );
+    let (what, here) = (named(VERDICTS, "blocks"), named(VERDICTS, blocks));
+    let _ = writeln!(md, "\n{what} {here}");
     md
 }
 

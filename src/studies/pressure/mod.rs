@@ -80,9 +80,7 @@ impl Study for Pressure {
         let o = &d.observe;
         let observed = |name: &str| o.scalars.iter().chain(&o.series).any(|n| n == name);
         let series = o.series.iter().any(|n| n.ends_with("_pressure"));
-        RESULTS
-            .iter()
-            .copied()
+        (RESULTS.iter().copied())
             .filter(|r| match *r {
                 "Z_wall" => observed("wall_pressure"),
                 "Z_virial" => observed("virial_pressure"),

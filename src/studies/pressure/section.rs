@@ -284,12 +284,9 @@ fn finite_size_table(fits: &[Fit]) -> String {
             0 => "– (0)".into(),
             dof => format!("{} ({dof})", num(f.chi2)),
         };
-        for (n, c, dof) in &f.left_out {
-            let c = num(*c);
-            let _ = write!(
-                chi2,
-                "; N = {n} left out (the line through it: χ² {c} for {dof}, beyond its 99 % point)"
-            );
+        for &(n, c, dof) in &f.left_out {
+            let values = [("n", n.to_string()), ("chi2", num(c)), ("dof", dof.to_string())];
+            chi2 += &sentence("left_out", &values);
         }
         md.push_str(&table_row(&[
             f.dimension.to_string(),
@@ -389,7 +386,7 @@ mod tests {
         }
         let keys = [
             "points", "lo", "hi", "reach", "cpu", "total", "equations", "phase", "beyond",
-            "drift", "n", "stderr", "from", "to", "drop", "sigmas", "flag",
+            "drift", "n", "stderr", "from", "to", "drop", "sigmas", "flag", "chi2", "dof",
         ];
         let values = keys.map(|k| (k, "x".to_string()));
         for name in names(super::SENTENCES) {
