@@ -22,12 +22,10 @@ pub const VERDICTS: &str = include_str!("verdicts.md");
 
 /// What an exponent of one run's scatter against its cost says.
 pub fn exponent(p: f64) -> &'static str {
-    let name = if (p + 0.5).abs() < 0.15 {
-        "as_replicas"
-    } else if p > -0.35 {
-        "no_gain"
-    } else {
-        "faster"
+    let name = match p {
+        p if (p + 0.5).abs() < 0.15 => "as_replicas",
+        p if p > -0.35 => "no_gain",
+        _ => "faster",
     };
     named(VERDICTS, name)
 }

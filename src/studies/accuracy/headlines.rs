@@ -192,9 +192,7 @@ fn one(study: &str, groups: &[&Length]) -> String {
 
 /// One run's scatter against its cost across run lengths, fitted.
 fn along_length(lengths: &[&Length], model: f64) -> String {
-    let pts: Vec<(f64, f64)> = lengths
-        .iter()
-        .filter(|l| l.cpu > 0.0 && l.scatter() > 0.0)
+    let pts: Vec<(f64, f64)> = (lengths.iter().filter(|l| l.cpu > 0.0 && l.scatter() > 0.0))
         .map(|l| (l.cpu, l.scatter()))
         .collect();
     if pts.len() < 2 {

@@ -177,14 +177,9 @@ fn sticking(scene: &str, naive: &[&Group], fixed: &[&Group]) -> Option<String> {
     let fixed_text = match worst(fixed).filter(|w| w.stuck > 0.0) {
         Some(w) => {
             let first = fixed.iter().find(|g| stuck(g)).map_or(w.dt, |g| g.dt);
-            finding(
-                "fixed_some",
-                &[
-                    ("first", num(first)),
-                    ("worst", num(w.stuck)),
-                    ("worst_dt", num(w.dt)),
-                ],
-            )
+            let (first, worst, worst_dt) = (num(first), num(w.stuck), num(w.dt));
+            let values = [("first", first), ("worst", worst), ("worst_dt", worst_dt)];
+            finding("fixed_some", &values)
         }
         None => finding("fixed_none", &[]),
     };

@@ -144,7 +144,8 @@ pub fn dense_disks_chart(pts: &[&Point]) -> Figure {
     }));
     let n = pts.first().map_or(0, |p| p.particles);
     let title = format!("Disks near the liquid-hexatic transition, N = {n}");
-    figure("pressure_dense_disks.svg", (title, "packing fraction η", "βPσ²"), (false, false), layers)
+    let labels = (title, "packing fraction η", "βPσ²");
+    figure("pressure_dense_disks.svg", labels, (false, false), layers)
 }
 
 fn black() -> Paint {

@@ -105,14 +105,14 @@ fn range(v: &[f64]) -> [String; 2] {
 /// Up to four runs for the pressure-against-time figure: a rod point, the
 /// walled disks (wall pressure), a disk and a sphere point.
 fn time_examples(all: &[Point]) -> Vec<(&Point, &str)> {
-    let picks: [(&str, fn(&Point) -> bool); 4] = [
-        ("rods, walls", |p| p.dimension == 1),
-        ("disks, walls", |p| p.dimension == 2 && p.walls),
-        ("disks, virial", |p| p.dimension == 2 && !p.walls && p.particles < 1000),
-        ("spheres, virial", |p| p.dimension == 3 && phases::is_fluid(3, p.eta)),
+    let pick = |label, f: fn(&Point) -> bool| Some((all.iter().rfind(|p| f(p))?, label));
+    let picks = [
+        pick("rods, walls", |p| p.dimension == 1),
+        pick("disks, walls", |p| p.dimension == 2 && p.walls),
+        pick("disks, virial", |p| p.dimension == 2 && !p.walls && p.particles < 1000),
+        pick("spheres, virial", |p| p.dimension == 3 && phases::is_fluid(3, p.eta)),
     ];
-    let last = |f: fn(&Point) -> bool| all.iter().filter(|p| f(p)).last();
-    (picks.iter()).filter_map(|&(label, f)| Some((last(f)?, label))).collect()
+    picks.into_iter().flatten().collect()
 }
 
 /// The periodic disks of the largest N with at least 1000 disks, from
@@ -338,7 +338,10 @@ fn loop_text(pts: &[&Point]) -> String {
     let said = match best {
         Some((i, j, drop)) => {
             let err = pressure(pts[i]).1.hypot(pressure(pts[j]).1);
-            let at = |q: &Point| format!("{} at η = {}", pm(pressure(q).0, pressure(q).1), num(q.eta));
+            let at = |q: &Point| {
+                let (v, e) = pressure(q);
+                format!("{} at η = {}", pm(v, e), num(q.eta))
+            };
             let drift = pts[i].drift.max(pts[j].drift);
             values.extend([
                 ("from", at(pts[i])),
