@@ -7,12 +7,13 @@
 //! and plans with the length that buys error cheapest.
 
 use super::groups::Group;
-use super::section::{headline, scatter};
+use super::section::{head, headline, scatter};
 use crate::model::descriptor::Integrator;
 use crate::stats::fill::fill;
 use crate::stats::format::num;
 use crate::stats::line::log_slope;
 use crate::stats::named::named;
+use crate::stats::table::table_row;
 use std::fmt::Write;
 
 const INTRO: &str = include_str!("effort.md");
@@ -21,12 +22,10 @@ pub const VERDICTS: &str = include_str!("verdicts.md");
 
 /// What an exponent of one run's scatter against its cost says.
 pub fn exponent(p: f64) -> &'static str {
-    let name = if (p + 0.5).abs() < 0.15 {
-        "as_replicas"
-    } else if p > -0.35 {
-        "no_gain"
-    } else {
-        "faster"
+    let name = match p {
+        p if (p + 0.5).abs() < 0.15 => "as_replicas",
+        p if p > -0.35 => "no_gain",
+        _ => "faster",
     };
     named(VERDICTS, name)
 }
@@ -55,61 +54,55 @@ fn lengths<'a>(all: &'a [Group], scene: &str) -> Vec<&'a Group> {
 /// The section's statistics part for every scene with exact runs of at
 /// least two lengths (empty if there is none).
 pub fn effort(all: &[Group], scenes: &[String]) -> String {
-    let mut md = String::new();
-    for scene in scenes {
-        let runs = lengths(all, scene);
-        if runs.len() < 2 {
-            continue;
-        }
-        if md.is_empty() {
-            md.push_str(INTRO);
-        }
-        md.push_str(&one(scene, &runs));
+    let parts: String = (scenes.iter())
+        .map(|scene| (scene, lengths(all, scene)))
+        .filter(|(_, runs)| runs.len() >= 2)
+        .map(|(scene, runs)| one(scene, &runs))
+        .collect();
+    if parts.is_empty() {
+        return parts;
     }
-    md
+    INTRO.to_string() + &parts
 }
 
 fn one(scene: &str, runs: &[&Group]) -> String {
     let (what, _) = headline(runs[0]);
-    let mut md = format!(
-        "\n#### {scene}: {what}\n\n| run length | runs | relative scatter of one run σ | CPU s/run c | σ √c |\n|---|---|---|---|---|\n"
-    );
+    let mut md = format!("\n#### {scene}: {what}\n\n{}", head("lengths", &[]));
     for g in runs {
         let s = scatter(g);
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {} | {} |",
+        md.push_str(&table_row(&[
             num(g.duration),
-            g.runs,
+            g.runs.to_string(),
             num(s),
             num(g.cpu),
-            num(s * g.cpu.sqrt())
-        );
+            num(s * g.cpu.sqrt()),
+        ]));
     }
     let points: Vec<(f64, f64)> = runs.iter().map(|g| (g.cpu, scatter(g))).collect();
     if let Some(p) = log_slope(&points, 2) {
         let values = [("p", num(p)), ("verdict", exponent(p).to_string())];
         let _ = writeln!(md, "\n{}", fill(named(VERDICTS, "effort_fit"), &values));
     }
-    // Plan with the length whose error costs least: n = (σ / X)^2 runs.
-    let best = runs
-        .iter()
-        .min_by(|a, b| (scatter(a).powi(2) * a.cpu).total_cmp(&(scatter(b).powi(2) * b.cpu)))
+    // Plan with the length whose error costs least.
+    let cost = |g: &Group| scatter(g).powi(2) * g.cpu;
+    let best = (runs.iter())
+        .min_by(|a, b| cost(a).total_cmp(&cost(b)))
         .expect("two lengths at least");
-    let _ = write!(
-        md,
-        "\n| for this error on the {what} | you need (CPU s) | as runs of length {} |\n|---|---|---|\n",
-        num(best.duration)
-    );
-    for x in TARGETS {
-        let n = (scatter(best) / x).powi(2).ceil().max(2.0);
-        let _ = writeln!(
-            md,
-            "| {} % | {} | {} |",
-            num(100.0 * x),
-            num(n * best.cpu),
-            n
-        );
-    }
-    md
+    let values = [("what", what.to_string()), ("length", num(best.duration))];
+    let table = plan(scatter(best), best.cpu, &TARGETS, |_| Vec::new());
+    md + "\n" + &head("runs_plan", &values) + &table
+}
+
+/// A planning table's rows: per target relative error x, the CPU seconds
+/// and the runs of `cpu` seconds each that one run's relative scatter
+/// `sigma` needs, n = (σ / x)² (at least 2, for an error bar), then the
+/// cells `more` adds for x.
+pub fn plan(sigma: f64, cpu: f64, targets: &[f64], more: impl Fn(f64) -> Vec<String>) -> String {
+    let row = |x: f64| {
+        let n = (sigma / x).powi(2).ceil().max(2.0);
+        let mut cells = vec![format!("{} %", num(100.0 * x)), num(n * cpu), n.to_string()];
+        cells.extend(more(x));
+        table_row(&cells)
+    };
+    targets.iter().map(|&x| row(x)).collect()
 }

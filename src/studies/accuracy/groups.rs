@@ -3,9 +3,8 @@
 //! ensemble statistics of every quantity the section shows.
 
 use crate::model::descriptor::Integrator;
-use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
-use crate::stats::groups::first_seen;
+use crate::stats::ensemble::Runs;
+use crate::stats::point_runs::{PointRuns, by_point};
 use crate::stats::summary::Stats;
 
 /// The runs of one scene with one integrator and step.
@@ -38,67 +37,41 @@ pub struct Group {
     pub cpu: f64,
 }
 
-/// A scene's name: its preset, or "scene".
-pub fn scene_of(spec: &RunSpec) -> String {
-    spec.descriptor
-        .scene
-        .preset
-        .clone()
-        .unwrap_or_else(|| "scene".into())
-}
-
-/// Groups in the order their first run comes in the plan.
-pub fn groups(runs: &[&(RunSpec, RunOutput)]) -> Vec<Group> {
-    // Bits, so that NaN (no fixed step) is one key.
-    let key = |s: &RunSpec| {
-        let run = &s.descriptor.run;
-        let dt = run.dt.unwrap_or(f64::NAN);
-        let duration = run.duration.unwrap_or(f64::NAN);
-        (
-            scene_of(s),
-            run.integrator,
-            dt.to_bits(),
-            duration.to_bits(),
-        )
-    };
-    (first_seen(runs.iter().copied(), |a, b| key(&a.0) == key(&b.0)).iter())
-        .map(|rs| group(rs))
+/// The groups of the points that are not headline cases, in the points'
+/// order.
+pub fn groups(runs: &Runs) -> Vec<Group> {
+    (by_point(runs).iter())
+        .filter(|p| super::headlines::model_of(p.spec).is_none())
+        .map(group)
         .collect()
 }
 
-fn group(rs: &[&(RunSpec, RunOutput)]) -> Group {
-    let (first, _) = rs[0];
-    let run = &first.descriptor.run;
-    let runs: Vec<&RunOutput> = rs.iter().map(|(_, o)| o).collect();
-    let values = |name: &str| -> Vec<f64> {
-        (runs.iter())
-            .filter_map(|o| o.scalar(name))
-            .filter(|v| v.is_finite())
-            .collect()
+fn group(p: &PointRuns) -> Group {
+    let run = &p.spec.descriptor.run;
+    let values = |name: &'static str| {
+        (p.outs.iter().filter_map(move |o| o.scalar(name))).filter(|v| v.is_finite())
     };
-    let stats = |name: &str| Stats::of(&values(name));
-    let max = |name: &str| values(name).into_iter().fold(f64::NAN, f64::max);
-    let collisions: u64 = runs.iter().map(|o| o.collisions).sum();
-    let repeats: f64 = values("repeat_collisions").iter().sum();
-    let cpu: Vec<f64> = runs.iter().map(|o| o.cpu_seconds).collect();
+    let max = |name: &'static str| values(name).fold(f64::NAN, f64::max);
+    let repeats: f64 = values("repeat_collisions").sum();
     Group {
-        scene: scene_of(first),
+        // Its preset, or "scene".
+        scene: (p.spec.descriptor.scene.preset.clone()).unwrap_or_else(|| "scene".into()),
         integrator: run.integrator,
         dt: run.dt.unwrap_or(f64::NAN),
         duration: run.duration.unwrap_or(f64::NAN),
         // A run with a piston records its frequency (NaN if unmeasured).
-        piston: runs.iter().any(|o| o.scalar("piston_frequency").is_some()),
-        runs: runs.len(),
-        pressure: stats("beta_pressure"),
-        collision_rate: stats("collision_rate"),
-        frequency: stats("piston_frequency"),
-        energy_drift: stats("energy_drift").mean,
+        piston: p.outs.iter().any(|o| o.scalar("piston_frequency").is_some()),
+        runs: p.outs.len(),
+        pressure: p.stat("beta_pressure"),
+        collision_rate: p.stat("collision_rate"),
+        frequency: p.stat("piston_frequency"),
+        energy_drift: p.stat("energy_drift").mean,
         depth_max: max("overlap_depth_max"),
-        depth_mean: stats("overlap_depth_mean").mean,
+        depth_mean: p.stat("overlap_depth_mean").mean,
         longest: max("overlap_steps_max"),
-        stuck: stats("stuck_pairs").mean,
-        repeat_share: repeats / (collisions.max(1) as f64),
-        cpu: Stats::of(&cpu).mean,
+        stuck: p.stat("stuck_pairs").mean,
+        repeat_share: repeats / (p.collisions().max(1) as f64),
+        cpu: p.cpu() / p.outs.len() as f64,
     }
 }
 

@@ -6,18 +6,23 @@
 //! groups of k replicas; both fitted against cost; the study's error model
 //! (`Study::error_model`) beside what was measured; and a planning table.
 
-use super::effort::{VERDICTS, exponent};
-use super::section::replicas_line;
-use crate::model::chart::{ChartSpec, Layer, colour};
+use super::effort::{VERDICTS, exponent, plan};
+use super::section::{head, replicas_line};
+use crate::model::chart::colour;
+use crate::model::report::Figure;
 use crate::model::run_output::RunOutput;
 use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs;
 use crate::stats::error_model::{ErrorModel, scatter_uncertainty, scatter_uncertainty_of};
 use crate::stats::fill::fill;
 use crate::stats::format::{num, pm};
 use crate::stats::groups::first_seen;
 use crate::stats::line::{Sums, log_slope};
 use crate::stats::named::named;
+use crate::stats::point_runs::by_point;
 use crate::stats::summary::{Stats, scalar};
+use crate::stats::table::table_row;
+use crate::studies::curves::{figure, markers, polyline};
 use std::fmt::Write;
 
 const INTRO: &str = include_str!("headlines.md");
@@ -65,73 +70,42 @@ impl Length<'_> {
 }
 
 /// The study other than this one with an error model for a run's
-/// descriptor, and the model.
-fn model_of(spec: &RunSpec) -> Option<(&'static str, ErrorModel)> {
+/// descriptor, and the model: a run with one belongs to a headline case.
+pub fn model_of(spec: &RunSpec) -> Option<(&'static str, ErrorModel)> {
     (crate::studies::error_models(&spec.descriptor).into_iter())
         .find(|(name, _)| *name != "accuracy")
 }
 
-/// Whether a run belongs to a headline case: its descriptor names a study
-/// other than this one that has an error model for it.
-pub fn is_headline(spec: &RunSpec) -> bool {
-    model_of(spec).is_some()
-}
-
-/// The headline runs grouped by (study, scene, run length), in plan order.
-pub fn lengths<'a>(runs: &[&'a (RunSpec, RunOutput)]) -> Vec<Length<'a>> {
-    let keyed = runs.iter().filter_map(|&(spec, o)| {
-        let (study, model) = model_of(spec)?;
-        let duration = spec.descriptor.run.duration.unwrap_or(f64::NAN);
-        let key = (
-            study,
-            format!("{:?}", spec.descriptor.scene),
-            duration.to_bits(),
-        );
-        Some((key, spec, model, o))
-    });
-    let groups = first_seen(keyed, |a, b| a.0 == b.0);
-    groups.into_iter().map(|g| length(&g)).collect()
-}
-
-type Keyed<'a> = (
-    (&'static str, String, u64),
-    &'a RunSpec,
-    ErrorModel,
-    &'a RunOutput,
-);
-
-fn length<'a>(group: &[Keyed<'a>]) -> Length<'a> {
-    let ((study, scene, duration), spec, model, _) = &group[0];
-    let case = spec.case.clone().unwrap_or_else(|| study.to_string());
-    // "headline-piston-m100-n5-300" -> "m100-n5".
-    let name = (case.trim_start_matches("headline-"))
-        .trim_start_matches(study)
-        .trim_start_matches('-')
-        .rsplit_once('-')
-        .map_or(String::new(), |(a, _)| a.to_string());
-    let runs: Vec<&RunOutput> = group.iter().map(|g| g.3).collect();
-    let values = (runs.iter().filter_map(|o| o.scalar(model.result)))
-        .filter(|v| v.is_finite())
-        .collect();
-    let cpu: Vec<f64> = (runs.iter().map(|o| o.cpu_seconds))
-        .filter(|c| c.is_finite())
-        .collect();
-    Length {
-        study,
-        name,
-        scene: scene.clone(),
-        model: model.clone(),
-        duration: f64::from_bits(*duration),
-        values,
-        runs,
-        cpu: cpu.iter().sum::<f64>() / cpu.len().max(1) as f64,
-    }
-}
-
-/// The studies with headline runs, in plan order.
-fn studies(all: &[Length]) -> Vec<&'static str> {
-    let groups = first_seen(all.iter().map(|l| l.study), |a, b| a == b);
-    groups.into_iter().map(|g| g[0]).collect()
+/// The headline cases' points, in plan order.
+pub fn lengths(runs: &Runs) -> Vec<Length<'_>> {
+    (by_point(runs).into_iter())
+        .filter_map(|p| {
+            let (study, model) = model_of(p.spec)?;
+            let case = p.spec.case.clone().unwrap_or_else(|| study.to_string());
+            // "headline-piston-m100-n5-300" -> "m100-n5".
+            let name = (case.trim_start_matches("headline-"))
+                .trim_start_matches(study)
+                .trim_start_matches('-')
+                .rsplit_once('-')
+                .map_or(String::new(), |(a, _)| a.to_string());
+            let values = (p.outs.iter().filter_map(|o| o.scalar(model.result)))
+                .filter(|v| v.is_finite())
+                .collect();
+            let cpu: Vec<f64> = (p.outs.iter().map(|o| o.cpu_seconds))
+                .filter(|c| c.is_finite())
+                .collect();
+            Some(Length {
+                study,
+                name,
+                scene: format!("{:?}", p.spec.descriptor.scene),
+                model,
+                duration: p.spec.descriptor.run.duration.unwrap_or(f64::NAN),
+                values,
+                runs: p.outs,
+                cpu: cpu.iter().sum::<f64>() / cpu.len().max(1) as f64,
+            })
+        })
+        .collect()
 }
 
 /// The groups of one study with at least two values, in plan order.
@@ -148,28 +122,26 @@ fn series<'a, 'b>(groups: &[&'a Length<'b>]) -> Vec<&'a Length<'b>> {
     let Some(most) = groups.iter().max_by_key(|g| same(g)) else {
         return Vec::new();
     };
-    let mut v: Vec<&Length> = groups
-        .iter()
-        .copied()
-        .filter(|g| g.scene == most.scene)
-        .collect();
+    let mut v = groups.to_vec();
+    v.retain(|g| g.scene == most.scene);
     v.sort_by(|a, b| a.duration.total_cmp(&b.duration));
     v
 }
 
 /// The length whose error costs least (σ₁² c smallest).
 fn cheapest<'a, 'b>(lengths: &[&'a Length<'b>]) -> Option<&'a Length<'b>> {
-    lengths
-        .iter()
-        .copied()
+    let cost = |l: &Length| l.scatter().powi(2) * l.cpu;
+    (lengths.iter().copied())
         .filter(|l| l.cpu > 0.0 && l.scatter() > 0.0)
-        .min_by(|a, b| (a.scatter().powi(2) * a.cpu).total_cmp(&(b.scatter().powi(2) * b.cpu)))
+        .min_by(|a, b| cost(a).total_cmp(&cost(b)))
 }
 
-/// The markdown part (empty without headline runs) and its chart.
-pub fn part(runs: &[&(RunSpec, RunOutput)]) -> (String, Option<ChartSpec>) {
+/// The markdown part (empty without headline runs) and its figure.
+pub fn part(runs: &Runs) -> (String, Option<Figure>) {
     let all = lengths(runs);
-    let names = studies(&all);
+    // The studies with headline runs, in plan order.
+    let studies = first_seen(all.iter().map(|l| l.study), |a, b| a == b);
+    let names: Vec<&str> = studies.into_iter().map(|g| g[0]).collect();
     if names.is_empty() {
         return (String::new(), None);
     }
@@ -185,37 +157,30 @@ fn one(study: &str, groups: &[&Length]) -> String {
         return String::new();
     };
     let label = first.model.label;
-    let mut md = format!(
-        "\n#### {study}: {label}\n\n| case | run length | runs | mean | one run's scatter σ₁ | model σ₁ | measured / model | CPU s/run | σ₁ √c |\n|---|---|---|---|---|---|---|---|---|\n"
-    );
+    let mut md = format!("\n#### {study}: {label}\n\n{}", head("headline", &[]));
     for l in groups {
-        let s = l.stats();
-        let sigma = l.scatter();
+        let (s, sigma) = (l.stats(), l.scatter());
         let u = scatter_uncertainty_of(&l.values);
-        let _ = writeln!(
-            md,
-            "| {} | {} | {}{} | {} | {} % | {} % | {} | {} | {} |",
-            l.name,
+        let mut runs = l.values.len().to_string();
+        if l.values.len() < l.runs.len() {
+            let _ = write!(runs, " of {}", l.runs.len());
+        }
+        let ratio = sigma / l.model.scatter;
+        md.push_str(&table_row(&[
+            l.name.clone(),
             num(l.duration),
-            l.values.len(),
-            if l.values.len() < l.runs.len() {
-                format!(" of {}", l.runs.len())
-            } else {
-                String::new()
-            },
+            runs,
             pm(s.mean, s.stderr),
-            pm(100.0 * sigma, 100.0 * sigma * u),
-            num(100.0 * l.model.scatter),
-            pm(sigma / l.model.scatter, sigma / l.model.scatter * u),
+            format!("{} %", pm(100.0 * sigma, 100.0 * sigma * u)),
+            format!("{} %", num(100.0 * l.model.scatter)),
+            pm(ratio, ratio * u),
             num(l.cpu),
             num(sigma * l.cpu.sqrt()),
-        );
+        ]));
     }
     let _ = writeln!(md, "\nModel ({}): {}.", first.name, first.model.basis);
     let lengths = series(groups);
-    if let Some(extra) = correlation(study, groups) {
-        md.push_str(&extra);
-    }
+    md.push_str(&correlation(study, groups));
     md.push_str(&along_length(&lengths, first.model.length_exponent));
     let Some(best) = cheapest(&lengths) else {
         return md;
@@ -227,9 +192,7 @@ fn one(study: &str, groups: &[&Length]) -> String {
 
 /// One run's scatter against its cost across run lengths, fitted.
 fn along_length(lengths: &[&Length], model: f64) -> String {
-    let pts: Vec<(f64, f64)> = lengths
-        .iter()
-        .filter(|l| l.cpu > 0.0 && l.scatter() > 0.0)
+    let pts: Vec<(f64, f64)> = (lengths.iter().filter(|l| l.cpu > 0.0 && l.scatter() > 0.0))
         .map(|l| (l.cpu, l.scatter()))
         .collect();
     if pts.len() < 2 {
@@ -265,24 +228,21 @@ fn along_replicas(best: &Length) -> String {
         let cost = k as f64 * best.cpu;
         let u = scatter_uncertainty(groups);
         pts.push((cost, se, u));
-        let _ = writeln!(
-            rows,
-            "| {k} | {groups} | {} % | {} % | {} % | {} |",
-            pm(100.0 * se, 100.0 * se * u),
-            num(100.0 * best.scatter() / (k as f64).sqrt()),
-            num(100.0 * best.model.stderr(k as u32)),
-            num(cost)
-        );
+        rows.push_str(&table_row(&[
+            k.to_string(),
+            groups.to_string(),
+            format!("{} %", pm(100.0 * se, 100.0 * se * u)),
+            format!("{} %", num(100.0 * best.scatter() / (k as f64).sqrt())),
+            format!("{} %", num(100.0 * best.model.stderr(k as u32))),
+            num(cost),
+        ]));
     }
     if rows.is_empty() {
         return rows;
     }
-    let mut md = format!(
-        "\nAgainst replicas ({}, run length {}; the spread of the means of disjoint groups of k):\n\n\
-         | replicas k | groups | measured standard error | σ₁/√k | model | CPU s |\n|---|---|---|---|---|---|\n{rows}",
-        best.name,
-        num(best.duration)
-    );
+    let values = [("name", best.name.clone()), ("length", num(best.duration))];
+    let against = fill(named(VERDICTS, "replicas"), &values);
+    let mut md = format!("\n{against}\n\n{}{rows}", head("replicas", &[]));
     if let Some((p, dp)) = weighted_slope(&pts) {
         let fit = fill(named(VERDICTS, "replicas_fit"), &[("p", pm(p, dp))]);
         let _ = writeln!(md, "\n{fit}");
@@ -311,37 +271,25 @@ fn planning(best: &Length) -> String {
         .filter(|&x| x < sigma / 2f64.sqrt())
         .take(4)
         .collect();
-    let mut md = format!(
-        "\n| for this error on the {} | you need (CPU s) | as replicas of length {} ({}) | the model: replicas | CPU s |\n|---|---|---|---|---|\n",
-        best.model.label,
-        num(best.duration),
-        best.name
-    );
-    for x in targets {
-        let n = (sigma / x).powi(2).ceil().max(2.0);
+    let values = [
+        ("what", best.model.label.to_string()),
+        ("length", num(best.duration)),
+        ("name", best.name.clone()),
+    ];
+    let rows = plan(sigma, best.cpu, &targets, |x| {
         let m = best.model.replicas_for(x);
-        let _ = writeln!(
-            md,
-            "| {} % | {} | {} | {} | {} |",
-            num(100.0 * x),
-            num(n * best.cpu),
-            n,
-            m,
-            num(m * best.cpu)
-        );
-    }
-    md
+        vec![m.to_string(), num(m * best.cpu)]
+    });
+    format!("\n{}{rows}", head("replicas_plan", &values))
 }
 
 /// The pressure's correlation time from the block analysis of each run,
 /// and what it does to the error: shown, not hidden.
-fn correlation(study: &str, groups: &[&Length]) -> Option<String> {
+fn correlation(study: &str, groups: &[&Length]) -> String {
     if study != "pressure" {
-        return None;
+        return String::new();
     }
-    let mut md = String::from(
-        "\n| case | run length | block length chosen | block error of one run, mean | replica scatter σ₁ (absolute) | ratio |\n|---|---|---|---|---|---|\n",
-    );
+    let mut md = format!("\n{}", head("blocks", &[]));
     let mut single = true;
     for l in groups {
         let block = scalar(l.runs.iter().copied(), "Z_block_stderr");
@@ -349,29 +297,23 @@ fn correlation(study: &str, groups: &[&Length]) -> Option<String> {
         let sigma = l.stats().std;
         let first = l.runs.iter().find_map(|o| spacing(o));
         single &= time.std == 0.0 && first.is_some_and(|dt| (time.mean - dt).abs() < 1e-9 * dt);
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {} | {} | {} |",
-            l.name,
+        md.push_str(&table_row(&[
+            l.name.clone(),
             num(l.duration),
             pm(time.mean, time.stderr),
             num(block.mean),
             num(sigma),
-            num(sigma / block.mean)
-        );
+            num(sigma / block.mean),
+        ]));
     }
     let blocks = if single {
         "blocks_single"
     } else {
         "blocks_longer"
     };
-    let _ = writeln!(
-        md,
-        "\n{} {}",
-        named(VERDICTS, "blocks"),
-        named(VERDICTS, blocks)
-    );
-    Some(md)
+    let (what, here) = (named(VERDICTS, "blocks"), named(VERDICTS, blocks));
+    let _ = writeln!(md, "\n{what} {here}");
+    md
 }
 
 /// The sampling interval of a run's pressure series.
@@ -382,7 +324,7 @@ fn spacing(o: &RunOutput) -> Option<f64> {
     (s.t.len() > 1).then(|| s.t[1] - s.t[0])
 }
 
-fn chart(all: &[Length], names: &[&'static str]) -> ChartSpec {
+fn chart(all: &[Length], names: &[&'static str]) -> Figure {
     let mut layers = Vec::new();
     for (i, study) in names.iter().enumerate() {
         let lengths = series(&of(all, study));
@@ -391,45 +333,28 @@ fn chart(all: &[Length], names: &[&'static str]) -> ChartSpec {
         };
         let paint = colour(i);
         let label = best.model.label;
-        layers.push(Layer::Markers {
-            points: (best.by_replicas().iter())
-                .map(|&(k, se, _)| (k as f64 * best.cpu, se))
-                .collect(),
+        let replicas = (best.by_replicas().iter())
+            .map(|&(k, se, _)| (k as f64 * best.cpu, se))
+            .collect();
+        layers.push(markers(
+            replicas,
             paint,
-            label: Some(format!("{study}: {label}, k replicas")),
-        });
-        let runs: Vec<(f64, f64)> = lengths
-            .iter()
-            .filter(|l| l.cpu > 0.0)
+            Some(format!("{study}: {label}, k replicas")),
+        ));
+        let runs: Vec<(f64, f64)> = (lengths.iter().filter(|l| l.cpu > 0.0))
             .map(|l| (l.cpu, l.scatter()))
             .collect();
-        layers.push(Layer::Line {
-            points: runs.clone(),
-            paint: paint.faded(0.5),
-            width: 1,
-            dashed: false,
-            label: None,
-        });
-        layers.push(Layer::Markers {
-            points: runs,
-            paint: paint.faded(0.45),
-            label: Some(format!("{study}: one run per length")),
-        });
+        layers.push(polyline(runs.clone(), paint.faded(0.5), 1, false, None));
+        let label = Some(format!("{study}: one run per length"));
+        layers.push(markers(runs, paint.faded(0.45), label));
         let label = format!("{study}: model, replicas");
-        layers.push(replicas_line(
-            best.cpu,
-            best.model.scatter,
-            15,
-            paint,
-            label,
-        ));
+        let model = best.model.scatter;
+        layers.push(replicas_line(best.cpu, model, 15, paint, label));
     }
-    ChartSpec {
-        title: "Headline results: error against CPU time".into(),
-        x_label: "CPU seconds".into(),
-        y_label: "relative standard error".into(),
-        x_log: true,
-        y_log: true,
-        layers,
-    }
+    let labels = (
+        "Headline results: error against CPU time".into(),
+        "CPU seconds",
+        "relative standard error",
+    );
+    figure("accuracy_effort.svg", labels, (true, true), layers)
 }

@@ -66,11 +66,8 @@ impl Study for Accuracy {
         let walls = d.observe.scalars.iter().any(|n| n == "wall_pressure");
         let piston = crate::scene::resolve(&d.scene).is_ok_and(|s| s.piston.is_some());
         let given = [true, walls, piston];
-        RESULTS
-            .iter()
-            .zip(given)
-            .filter(|(_, g)| *g)
-            .map(|(r, _)| *r)
+        (RESULTS.iter().zip(given))
+            .filter_map(|(r, g)| g.then_some(*r))
             .collect()
     }
     fn per_run(&self, run: &Finished, out: &mut RunOutput) -> Result<(), String> {

@@ -3,11 +3,10 @@
 //! and a table per scene.
 
 use super::groups::{Group, error, groups};
-use crate::model::chart::{ChartSpec, Layer, Paint, colour};
+use crate::model::chart::{Layer, Paint, colour};
 use crate::model::descriptor::Integrator;
 use crate::model::report::{Figure, ReportSection};
-use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
+use crate::stats::ensemble::Runs;
 use crate::stats::fill::fill;
 use crate::stats::format::{num, pm};
 use crate::stats::groups::first_seen;
@@ -15,24 +14,30 @@ use crate::stats::line::log_slope;
 use crate::stats::named::named;
 use crate::stats::summary::Stats;
 use crate::stats::table::table_row;
+use crate::studies::curves::{figure, markers, polyline};
 use std::fmt::Write;
 
 const INTRO: &str = include_str!("intro.md");
 const COST: &str = include_str!("cost.md");
 const FINDINGS: &str = include_str!("findings.md");
 const METHODS: &str = include_str!("methods.md");
+/// The header rows of the tables, by name.
+const TABLES: &str = include_str!("tables.md");
 
 /// The finding `name` of findings.md with its numbers.
 fn finding(name: &str, values: &[(&str, String)]) -> String {
     fill(named(FINDINGS, name), values)
 }
 
-pub fn section(runs: &[(RunSpec, RunOutput)]) -> ReportSection {
-    // The other studies' headline cases have a part of their own.
-    let (headline, own): (Vec<_>, Vec<_>) = runs
-        .iter()
-        .partition(|(s, _)| super::headlines::is_headline(s));
-    let all = groups(&own);
+/// The head of the table named `name` in TABLES: its header row, filled,
+/// and the rule under it.
+pub fn head(name: &str, values: &[(&str, String)]) -> String {
+    let row = fill(named(TABLES, name), values);
+    format!("{row}\n|{}\n", "---|".repeat(row.matches(" | ").count() + 1))
+}
+
+pub fn section(runs: &Runs) -> ReportSection {
+    let all = groups(runs);
     let scenes: Vec<String> = (first_seen(all.iter().map(|g| &g.scene), |a, b| a == b))
         .into_iter()
         .map(|v| v[0].clone())
@@ -42,26 +47,19 @@ pub fn section(runs: &[(RunSpec, RunOutput)]) -> ReportSection {
         let _ = writeln!(md, "- {line}");
     }
     let mut figures = Vec::new();
-    let chart = cost_chart(&all, &scenes);
-    if !chart.layers.is_empty() {
-        figures.push(Figure {
-            file: "accuracy_cost.svg".into(),
-            chart,
-        });
+    let cost = cost_chart(&all, &scenes);
+    if !cost.chart.layers.is_empty() {
+        figures.push(cost);
         md.push_str(COST);
     }
     for scene in &scenes {
         md.push_str(&table(scene, &all));
     }
     md.push_str(&super::effort::effort(&all, &scenes));
-    let (part, chart) = super::headlines::part(&headline);
+    // The other studies' headline cases have a part of their own.
+    let (part, effort) = super::headlines::part(runs);
     md.push_str(&part);
-    if let Some(chart) = chart.filter(|c| !c.layers.is_empty()) {
-        figures.push(Figure {
-            file: "accuracy_effort.svg".into(),
-            chart,
-        });
-    }
+    figures.extend(effort.filter(|f| !f.chart.layers.is_empty()));
     md.push_str(METHODS);
     ReportSection {
         title: "What accuracy costs in time: fixed step against exact events".into(),
@@ -121,9 +119,8 @@ fn findings(all: &[Group], scenes: &[String]) -> Vec<String> {
     let mut lines = Vec::new();
     for scene in scenes {
         let naive = steps(all, scene, Integrator::FixedStepNaive);
-        if let Some(line) = sticking(scene, &naive, &steps(all, scene, Integrator::FixedStep)) {
-            lines.push(line);
-        }
+        let fixed = steps(all, scene, Integrator::FixedStep);
+        lines.extend(sticking(scene, &naive, &fixed));
     }
     let fixed = all.iter().filter(|g| g.integrator == Integrator::FixedStep);
     let drift = fixed.clone().map(|g| g.energy_drift).fold(0.0, f64::max);
@@ -162,15 +159,15 @@ fn sticking(scene: &str, naive: &[&Group], fixed: &[&Group]) -> Option<String> {
     let (first, last) = (naive.first()?, naive.last()?);
     let stuck = |g: &&Group| g.stuck > 0.0;
     let w = worst(naive)?;
+    let clean = naive.iter().take_while(|g| !stuck(g)).last();
     let mut values = vec![
         ("scene", scene.to_string()),
         ("first", num(first.dt)),
         ("last", num(last.dt)),
         ("worst", num(w.stuck)),
         ("worst_dt", num(w.dt)),
+        ("clean", clean.map_or(String::new(), |g| num(g.dt))),
     ];
-    let clean = naive.iter().take_while(|g| !stuck(g)).last();
-    values.push(("clean", clean.map_or(String::new(), |g| num(g.dt))));
     let naive_text = match (naive.iter().any(stuck), clean) {
         (false, _) => "naive_none",
         (true, None) => "naive_all",
@@ -180,14 +177,9 @@ fn sticking(scene: &str, naive: &[&Group], fixed: &[&Group]) -> Option<String> {
     let fixed_text = match worst(fixed).filter(|w| w.stuck > 0.0) {
         Some(w) => {
             let first = fixed.iter().find(|g| stuck(g)).map_or(w.dt, |g| g.dt);
-            finding(
-                "fixed_some",
-                &[
-                    ("first", num(first)),
-                    ("worst", num(w.stuck)),
-                    ("worst_dt", num(w.dt)),
-                ],
-            )
+            let (first, worst, worst_dt) = (num(first), num(w.stuck), num(w.dt));
+            let values = [("first", first), ("worst", worst), ("worst_dt", worst_dt)];
+            finding("fixed_some", &values)
         }
         None => finding("fixed_none", &[]),
     };
@@ -249,7 +241,7 @@ fn budget(scene: &str, reference: &Group, pts: &[&Group], seconds: f64) -> Optio
     Some(finding("cost", &values))
 }
 
-fn cost_chart(all: &[Group], scenes: &[String]) -> ChartSpec {
+fn cost_chart(all: &[Group], scenes: &[String]) -> Figure {
     let mut layers = Vec::new();
     for (k, scene) in scenes.iter().enumerate() {
         let Some(reference) = exact(all, scene) else {
@@ -268,28 +260,18 @@ fn cost_chart(all: &[Group], scenes: &[String]) -> ChartSpec {
             .filter(|&(c, e, _)| c > 0.0 && e > 0.0)
             .collect();
         let (what, _) = headline(reference);
-        layers.push(Layer::Line {
-            points: pts.iter().map(|&(c, e, _)| (c, e)).collect(),
-            paint: paint.faded(0.4),
-            width: 1,
-            dashed: false,
-            label: None,
-        });
+        let line = pts.iter().map(|&(c, e, _)| (c, e)).collect();
+        layers.push(polyline(line, paint.faded(0.4), 1, false, None));
         for (resolved, label) in [
             (true, format!("{scene}: fixed step ({what})")),
             (false, format!("{scene}: fixed step, bound (not resolved)")),
         ] {
-            let marked: Vec<(f64, f64)> = pts
-                .iter()
-                .filter(|p| p.2 == resolved)
+            let marked: Vec<(f64, f64)> = (pts.iter().filter(|p| p.2 == resolved))
                 .map(|&(c, e, _)| (c, e))
                 .collect();
+            let paint = if resolved { paint } else { paint.faded(0.35) };
             if !marked.is_empty() {
-                layers.push(Layer::Markers {
-                    points: marked,
-                    paint: if resolved { paint } else { paint.faded(0.35) },
-                    label: Some(label),
-                });
+                layers.push(markers(marked, paint, Some(label)));
             }
         }
         let s = scatter(reference);
@@ -298,40 +280,21 @@ fn cost_chart(all: &[Group], scenes: &[String]) -> ChartSpec {
             layers.push(replicas_line(reference.cpu, s, 20, paint, label));
         }
     }
-    ChartSpec {
-        title: "Error against CPU time".into(),
-        x_label: "CPU seconds of one run".into(),
-        y_label: "relative error".into(),
-        x_log: true,
-        y_log: true,
-        layers,
-    }
+    let labels = ("Error against CPU time".into(), "CPU seconds of one run", "relative error");
+    figure("accuracy_cost.svg", labels, (true, true), layers)
 }
 
 /// Dashed: one run's error `s` at its cost `c0`, falling as cost^(−1/2)
 /// with replicas, over `fifths` fifths of a decade.
 pub fn replicas_line(c0: f64, s: f64, fifths: u32, paint: Paint, label: String) -> Layer {
-    Layer::Line {
-        points: (0..=fifths)
-            .map(|i| {
-                let c = c0 * 10f64.powf(i as f64 / 5.0);
-                (c, s * (c0 / c).sqrt())
-            })
-            .collect(),
-        paint,
-        width: 2,
-        dashed: true,
-        label: Some(label),
-    }
+    let c = (0..=fifths).map(|i| c0 * 10f64.powf(i as f64 / 5.0));
+    let points = c.map(|c| (c, s * (c0 / c).sqrt())).collect();
+    polyline(points, paint, 2, true, Some(label))
 }
 
 fn table(scene: &str, all: &[Group]) -> String {
     let reference = exact(all, scene);
-    let mut md = format!(
-        "\n### {scene}\n\n| integrator | dt | runs | βP | error | collision rate | error | \
-         piston frequency | error | energy drift | deepest overlap | mean overlap | longest overlap (steps) | \
-         stuck pairs/run | repeat collisions | CPU s/run |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n"
-    );
+    let mut md = format!("\n### {scene}\n\n{}", head("scene", &[]));
     // The reference and the fixed steps; exact runs of other lengths are
     // the statistics part's.
     let mut rows: Vec<&Group> = all
@@ -347,16 +310,13 @@ fn table(scene: &str, all: &[Group]) -> String {
             .cmp(&(b.integrator as u8))
             .then(a.dt.total_cmp(&b.dt))
     });
-    let err = |a: &Stats, b: Option<&Stats>| match b.and_then(|b| error(a, b)) {
-        Some((e, se)) => format!("{} %", pm(100.0 * e, 100.0 * se)),
-        None => "–".into(),
+    let err = |a: &Stats, b: Option<&Stats>| {
+        let e = b.and_then(|b| error(a, b));
+        e.map_or("–".into(), |(e, se)| format!("{} %", pm(100.0 * e, 100.0 * se)))
     };
-    let stat = |s: &Stats| {
-        if s.n == 0 {
-            "–".to_string()
-        } else {
-            pm(s.mean, s.stderr)
-        }
+    let stat = |s: &Stats| match s.n {
+        0 => "–".into(),
+        _ => pm(s.mean, s.stderr),
     };
     let compared: [fn(&Group) -> &Stats; 3] =
         [|g| &g.pressure, |g| &g.collision_rate, |g| &g.frequency];
@@ -397,7 +357,7 @@ mod tests {
         let keys = [
             "scene", "naive", "fixed", "first", "last", "worst", "worst_dt", "clean", "drift",
             "what", "dt", "error", "order", "exact", "cpu", "p", "verdict", "name", "from", "to",
-            "lo", "hi", "model",
+            "lo", "hi", "model", "length",
         ];
         let values = keys.map(|k| (k, "x".to_string()));
         for text in [FINDINGS, super::super::effort::VERDICTS] {

@@ -1,13 +1,14 @@
-//! The section's figures as chart data: Z against packing fraction with the
-//! equations of state, Z over the reference equation, pressure against time,
-//! Z against 1/N, and the dense disks' pressure.
+//! The section's figures: Z against packing fraction with the equations of
+//! state, Z over the reference equation, pressure against time, Z against
+//! 1/N, and the dense disks' pressure.
 
-use super::equations::{self, Equation};
+use super::equations;
 use super::finite_size::Fit;
 use super::phases::DISK_FLUID_ENDS;
 use super::points::Point;
-use crate::model::chart::{ChartSpec, Layer, Paint, colour};
-use crate::studies::curves::{chart, markers, measured, polyline, sampled};
+use crate::model::chart::{Layer, Paint, colour};
+use crate::model::report::Figure;
+use crate::studies::curves::{figure, markers, measured, polyline, sampled};
 
 pub const NAMES: [&str; 3] = [
     "Rods (1D, walls)",
@@ -17,27 +18,22 @@ pub const NAMES: [&str; 3] = [
 
 /// The bulk points of dimension `d`: periodic boxes, and rods.
 pub fn bulk(all: &[Point], d: usize) -> Vec<&Point> {
-    all.iter()
-        .filter(|p| p.dimension == d && (d == 1 || !p.walls))
-        .collect()
+    all.iter().filter(|p| p.dimension == d && p.bulk()).collect()
 }
 
-pub fn z_chart(all: &[Point]) -> ChartSpec {
-    let top = all.iter().map(|p| p.eta).fold(0.0, f64::max) * 1.02;
-    let ideal = vec![(0.0, 1.0), (top, 1.0)];
-    let mut layers = vec![thin(ideal, BLACK, true, Some("ideal gas".into()))];
+pub fn z_chart(all: &[Point]) -> Figure {
+    let ideal = vec![(0.0, 1.0), (reach(all), 1.0)];
+    let mut layers = vec![thin(ideal, black(), true, Some("ideal gas".into()))];
     for d in 1..=3 {
         let pts = bulk(all, d);
         if pts.is_empty() {
             continue;
         }
         let paint = colour(d - 1);
-        let reach = pts.iter().map(|p| p.eta).fold(0.0, f64::max) * 1.02;
         for (i, e) in equations::of(d).iter().enumerate() {
             // Each curve up to where it is meant to hold (rods: to the data),
             // and never past where its formula means anything.
-            let end = reach
-                .min(e.holds_below.max(0.3) + 0.05)
+            let end = (reach(pts.iter().copied()).min(e.holds_below.max(0.3) + 0.05))
                 .min(e.defined_below);
             let faded = paint.faded(if i == 0 { 1.0 } else { 0.6 });
             let label = Some(format!("{}D: {}", d, e.name));
@@ -47,52 +43,47 @@ pub fn z_chart(all: &[Point]) -> ChartSpec {
             (p.z.mean, p.error().0)
         }));
     }
-    let title = "Equation of state: Z = βP/ρ";
-    let labels = (title, "packing fraction η", "Z = βP/ρ");
-    chart(labels, (false, true), layers)
+    let labels = ("Equation of state: Z = βP/ρ".into(), "packing fraction η", "Z = βP/ρ");
+    figure("pressure_z.svg", labels, (false, true), layers)
 }
 
 /// None when no point has a reference equation that holds (the disks'
 /// loop study, say): an empty chart says nothing.
-pub fn deviation_chart(all: &[Point]) -> Option<ChartSpec> {
+pub fn deviation_chart(all: &[Point]) -> Option<Figure> {
     let mut layers = Vec::new();
     for d in 1..=3 {
         // Fluid points where the reference equation holds.
-        let eqs = equations::of(d);
-        let reference: &Equation = &eqs[0];
-        let pts: Vec<&Point> = bulk(all, d)
-            .into_iter()
-            .filter(|p| p.eta <= reference.holds_below)
+        let pts: Vec<&Point> = (bulk(all, d).into_iter())
+            .filter(|p| p.reference_holds())
             .collect();
         if pts.is_empty() {
             continue;
         }
         let paint = colour(d - 1);
-        let reach = pts.iter().map(|p| p.eta).fold(0.0, f64::max) * 1.02;
-        for e in &eqs[1..] {
+        let [reference, others @ ..] = equations::of(d) else {
+            continue;
+        };
+        for e in others {
             let over = |eta| (e.z)(eta) / (reference.z)(eta) - 1.0;
-            let points = sampled(0.0, reach.min(e.holds_below + 0.05), 200, over);
+            let end = reach(pts.iter().copied()).min(e.holds_below + 0.05);
             let label = Some(format!("{}D: {}", d, e.name));
-            layers.push(thin(points, paint.faded(0.6), true, label));
+            layers.push(thin(sampled(0.0, end, 200, over), paint.faded(0.6), true, label));
         }
         layers.extend(at_eta(&pts, paint, NAMES[d - 1], |p| {
             let r = (reference.z)(p.eta);
             (p.z.mean / r - 1.0, p.error().0 / r)
         }));
     }
-    if layers.is_empty() {
-        return None;
-    }
     let title = "Z over the reference equation, minus 1 (fluid points, finite N)";
-    let labels = (title, "packing fraction η", "Z / Z_reference − 1");
-    Some(chart(labels, (false, false), layers))
+    let labels = (title.into(), "packing fraction η", "Z / Z_reference − 1");
+    (!layers.is_empty()).then(|| figure("pressure_deviation.svg", labels, (false, false), layers))
 }
 
 /// The pressure of a few runs against time, each over its own mean.
-pub fn time_chart(examples: &[(&Point, &str)]) -> ChartSpec {
+pub fn time_chart(examples: &[(&Point, &str)]) -> Figure {
     let mut layers = Vec::new();
     for (i, (p, label)) in examples.iter().enumerate() {
-        let Some((_, t, v)) = &p.example else {
+        let Some((t, v)) = &p.example else {
             continue;
         };
         let mean = v.iter().sum::<f64>() / v.len() as f64;
@@ -101,11 +92,11 @@ pub fn time_chart(examples: &[(&Point, &str)]) -> ChartSpec {
         layers.push(thin(points, paint, false, label));
     }
     let title = "Pressure against time (one replica each, per sampling interval)";
-    let labels = (title, "time t (σ√(m/kT))", "P(t) / mean P");
-    chart(labels, (false, false), layers)
+    let labels = (title.into(), "time t (σ√(m/kT))", "P(t) / mean P");
+    figure("pressure_time.svg", labels, (false, false), layers)
 }
 
-pub fn finite_size_chart(fits: &[Fit]) -> ChartSpec {
+pub fn finite_size_chart(fits: &[Fit]) -> Figure {
     let mut layers = Vec::new();
     for (i, f) in fits.iter().enumerate() {
         let paint = colour(i);
@@ -126,15 +117,15 @@ pub fn finite_size_chart(fits: &[Fit]) -> ChartSpec {
         layers.push(markers(points.collect(), paint, Some(label)));
     }
     let zero = vec![(0.0, 0.0), (1.0 / 64.0, 0.0)];
-    layers.push(thin(zero, BLACK, true, Some("reference equation".into())));
+    layers.push(thin(zero, black(), true, Some("reference equation".into())));
     let title = "Finite size: Z against 1/N, extrapolated to N → ∞ (at 1/N = 0)";
-    let labels = (title, "1/N", "Z / Z_reference − 1");
-    chart(labels, (false, false), layers)
+    let labels = (title.into(), "1/N", "Z / Z_reference − 1");
+    figure("pressure_finite_size.svg", labels, (false, false), layers)
 }
 
 /// βPσ² = Z ρ of the dense disks of one size, with the fluid's equation as
 /// far as the fluid goes.
-pub fn dense_disks_chart(pts: &[&Point]) -> ChartSpec {
+pub fn dense_disks_chart(pts: &[&Point]) -> Figure {
     let rho = |eta: f64| 4.0 * eta / std::f64::consts::PI;
     let paint = colour(1);
     // A line joins the means; the fluid's equation (at N → ∞) is drawn up to
@@ -154,13 +145,17 @@ pub fn dense_disks_chart(pts: &[&Point]) -> ChartSpec {
     let n = pts.first().map_or(0, |p| p.particles);
     let title = format!("Disks near the liquid-hexatic transition, N = {n}");
     let labels = (title, "packing fraction η", "βPσ²");
-    chart(labels, (false, false), layers)
+    figure("pressure_dense_disks.svg", labels, (false, false), layers)
 }
 
-const BLACK: Paint = Paint {
-    rgb: (0, 0, 0),
-    alpha: 1.0,
-};
+fn black() -> Paint {
+    Paint::solid((0, 0, 0))
+}
+
+/// A little beyond the densest of `pts`: where the curves end.
+fn reach<'a>(pts: impl IntoIterator<Item = &'a Point>) -> f64 {
+    pts.into_iter().map(|p| p.eta).fold(0.0, f64::max) * 1.02
+}
 
 /// A line one pixel wide.
 fn thin(points: Vec<(f64, f64)>, paint: Paint, dashed: bool, label: Option<String>) -> Layer {

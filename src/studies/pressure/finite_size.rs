@@ -48,18 +48,16 @@ pub fn fits(points: &[Point]) -> Vec<Fit> {
     .filter_map(|mut g| {
         g.sort_by_key(|p| p.particles);
         g.dedup_by_key(|p| p.particles);
-        if g.len() < 2 {
-            return None;
-        }
-        let mut left_out = Vec::new();
-        let mut f = fit(&g);
-        while g.len() > 2 && rejected(f.chi2, f.dof) {
-            left_out.push((g[0].particles, f.chi2, f.dof));
-            g.remove(0);
-            f = fit(&g);
-        }
-        f.left_out = left_out;
-        Some(f)
+        (g.len() >= 2).then(|| {
+            let mut left_out = Vec::new();
+            let mut f = fit(&g);
+            while g.len() > 2 && rejected(f.chi2, f.dof) {
+                left_out.push((g[0].particles, f.chi2, f.dof));
+                g.remove(0);
+                f = fit(&g);
+            }
+            Fit { left_out, ..f }
+        })
     })
     .collect()
 }

@@ -20,29 +20,18 @@ use crate::model::run_output::RunOutput;
 use crate::observe::Context;
 use crate::stats::blocking::{blocked, drift};
 use crate::stats::mser;
+use crate::stats::summary::Stats;
 
-/// What one run adds.
-pub struct Measured {
-    /// Z from the walls where there are walls, else from the virial.
-    pub z: f64,
-    pub z_wall: f64,
-    pub z_virial: f64,
-    pub packing_fraction: f64,
-    pub density: f64,
-    /// Time the MSER rule cut from the start of the recorded series.
-    pub cut_time: f64,
-    /// Block-average standard error of `z`, the block length (time) it
-    /// used and the estimate with blocks twice as long over it.
-    pub block_stderr: f64,
-    pub block_time: f64,
-    pub block_doubling: f64,
-    /// The run's own standard error of `z`: `block_stderr`, or for equal
-    /// rods between walls the wall-hit model's (NaN without either).
-    pub run_stderr: f64,
-    /// Mean of the second half of the kept series minus the first, over
-    /// the error of that difference (about N(0, 1) when equilibrated).
-    pub drift: f64,
-}
+/// What one run adds, in `RESULTS` order: Z (from the walls where there
+/// are walls, else from the virial), Z from the walls and from the virial,
+/// packing fraction and density; the time the MSER rule cut from the start
+/// of the recorded series; the block-average standard error of Z, the block
+/// length (time) it used and the estimate with blocks twice as long over it;
+/// the run's own standard error of Z (the block error, or for equal rods
+/// between walls the wall-hit model's; NaN without either); and the drift:
+/// the mean of the second half of the kept series minus the first, over the
+/// error of that difference (about N(0, 1) when equilibrated).
+pub type Measured = [f64; super::RESULTS.len()];
 
 pub fn measure<const D: usize>(
     particles: &[Particle<D>],
@@ -67,7 +56,7 @@ pub fn measure<const D: usize>(
     // Z from a pressure `p`: walls or virial (see the module doc).
     let z_wall = |p: f64| p * ctx.volume / (n * kt);
     let z_virial = |p: f64| 1.0 + (p * wall_term * ctx.volume - ideal) / (n * kt);
-    let (packing_fraction, density) = packing::of_particles(particles, ctx.volume);
+    let (eta, rho) = packing::of_particles(particles, ctx.volume);
     let series = |name: &str, f: &dyn Fn(f64) -> f64| -> Option<(Vec<f64>, f64)> {
         let s = out.series(name)?;
         let dt = s.t.get(1).map_or(f64::NAN, |t| t - s.t[0]);
@@ -78,19 +67,11 @@ pub fn measure<const D: usize>(
     let z_wall_scalar = out.scalar("wall_pressure").map(z_wall);
     let z_virial_scalar = out.scalar("virial_pressure").map(z_virial);
 
-    let mut m = Measured {
-        z: f64::NAN,
-        z_wall: z_wall_scalar.unwrap_or(f64::NAN),
-        z_virial: z_virial_scalar.unwrap_or(f64::NAN),
-        packing_fraction,
-        density,
-        cut_time: f64::NAN,
-        block_stderr: f64::NAN,
-        block_time: f64::NAN,
-        block_doubling: f64::NAN,
-        run_stderr: f64::NAN,
-        drift: f64::NAN,
-    };
+    let mut wall_z = z_wall_scalar.unwrap_or(f64::NAN);
+    let mut virial_z = z_virial_scalar.unwrap_or(f64::NAN);
+    // From the series, NaN without one: the cut, block error, block length,
+    // doubling ratio and drift.
+    let [mut cut_time, mut block, mut length, mut doubling, mut drifted] = [f64::NAN; 5];
     // Equal rods between walls: the mass of each, else None.
     let rod_mass = (D == 1 && ctx.wall_area > 0.0 && !movable.is_empty())
         .then(|| movable[0].inv_mass)
@@ -98,41 +79,35 @@ pub fn measure<const D: usize>(
         .map(|im| 1.0 / im);
     let mut measured_time = ctx.duration;
     let main = wall.as_ref().or(virial.as_ref());
-    if let Some((z, dt)) = main {
+    let z = if let Some((z, dt)) = main {
         let cut = mser::cut(z);
         let kept = &z[cut..];
-        m.z = mean(kept);
-        m.cut_time = cut as f64 * dt;
+        cut_time = cut as f64 * dt;
         measured_time = kept.len() as f64 * dt;
         if let Some(b) = blocked(kept) {
-            m.block_stderr = b.stderr;
-            m.block_time = b.length as f64 * dt;
-            m.block_doubling = b.doubling;
+            (block, length, doubling) = (b.stderr, b.length as f64 * dt, b.doubling);
         }
-        m.drift = drift(kept);
+        drifted = drift(kept);
         // The series' means over the same kept stretch.
         if let Some((w, _)) = &wall {
-            m.z_wall = mean(&w[cut..]);
+            wall_z = Stats::of(&w[cut..]).mean;
         }
         if let Some((v, _)) = &virial {
-            m.z_virial = mean(&v[cut..]);
+            virial_z = Stats::of(&v[cut..]).mean;
         }
+        Stats::of(kept).mean
     } else {
-        m.z = z_wall_scalar.or(z_virial_scalar).ok_or(
+        z_wall_scalar.or(z_virial_scalar).ok_or(
             "the pressure analysis needs `wall_pressure` (walls) or `virial_pressure` in [observe] scalars or series",
-        )?;
-    }
-    m.run_stderr = match rod_mass {
+        )?
+    };
+    let own = match rod_mass {
         Some(mass) if wall.is_some() || z_wall_scalar.is_some() => {
             rod_stderr(ctx.volume, measured_time, kinetic, mass)
         }
-        _ => m.block_stderr,
+        _ => block,
     };
-    Ok(m)
-}
-
-fn mean(x: &[f64]) -> f64 {
-    x.iter().sum::<f64>() / x.len() as f64
+    Ok([z, wall_z, virial_z, eta, rho, cut_time, block, length, doubling, own, drifted])
 }
 
 /// The standard error of Z of equal rods of mass `mass` between walls, a

@@ -80,9 +80,7 @@ impl Study for Pressure {
         let o = &d.observe;
         let observed = |name: &str| o.scalars.iter().chain(&o.series).any(|n| n == name);
         let series = o.series.iter().any(|n| n.ends_with("_pressure"));
-        RESULTS
-            .iter()
-            .copied()
+        (RESULTS.iter().copied())
             .filter(|r| match *r {
                 "Z_wall" => observed("wall_pressure"),
                 "Z_virial" => observed("virial_pressure"),
@@ -101,22 +99,8 @@ impl Study for Pressure {
         if piston.is_some() {
             return Err("the pressure analysis needs a scene without a piston".into());
         }
-        let m = m?;
-        let values = [
-            m.z,
-            m.z_wall,
-            m.z_virial,
-            m.packing_fraction,
-            m.density,
-            m.cut_time,
-            m.block_stderr,
-            m.block_time,
-            m.block_doubling,
-            m.run_stderr,
-            m.drift,
-        ];
         let writes = self.writes(run.descriptor);
-        for (name, v) in RESULTS.iter().zip(values) {
+        for (name, v) in RESULTS.iter().zip(m?) {
             if writes.contains(name) {
                 out.scalars.push((name.to_string(), v));
             }

@@ -2,10 +2,10 @@
 //! measured, pooled, and how the point was started and equilibrated.
 
 use super::packing;
-use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
+use super::equations;
 use crate::model::scene::Placement;
-use crate::stats::groups::first_seen;
+use crate::stats::ensemble::Runs;
+use crate::stats::point_runs::{PointRuns, by_point};
 use crate::stats::summary::Stats;
 
 /// Replicas from which their spread alone is the error bar (a standard
@@ -51,7 +51,7 @@ pub struct Point {
     pub z_virial: Option<Stats>,
     pub cpu_seconds: f64,
     /// The first replica's pressure series (time, P), as stored.
-    pub example: Option<(String, Vec<f64>, Vec<f64>)>,
+    pub example: Option<(Vec<f64>, Vec<f64>)>,
 }
 
 impl Point {
@@ -68,6 +68,16 @@ impl Point {
         }
     }
 
+    /// Rods, and periodic boxes: the points the bulk equations describe.
+    pub fn bulk(&self) -> bool {
+        self.dimension == 1 || !self.walls
+    }
+
+    /// Whether the dimension's reference equation holds at the point's η.
+    pub fn reference_holds(&self) -> bool {
+        self.eta <= equations::of(self.dimension)[0].holds_below
+    }
+
     /// Z with the point's error bar, as `Stats` for z-scores.
     pub fn z_stats(&self) -> Stats {
         Stats {
@@ -78,57 +88,56 @@ impl Point {
 }
 
 /// The sweep's points with a measured Z, in plan order.
-pub fn points(runs: &[(RunSpec, RunOutput)]) -> Vec<Point> {
-    let measured = (runs.iter())
-        .filter(|(s, o)| s.case.is_none() && o.scalar("Z").is_some_and(|z| !z.is_nan()));
-    (first_seen(measured, |a, b| a.0.point_id == b.0.point_id).iter())
-        .filter_map(|rs| point(rs))
+pub fn points(runs: &Runs) -> Vec<Point> {
+    let mut all = by_point(runs);
+    for p in &mut all {
+        p.outs.retain(|o| o.scalar("Z").is_some_and(|z| !z.is_nan()));
+    }
+    (all.iter())
+        .filter(|p| p.spec.case.is_none() && !p.outs.is_empty())
+        .filter_map(point)
         .collect()
 }
 
-fn point(rs: &[&(RunSpec, RunOutput)]) -> Option<Point> {
-    let d = &rs[0].0.descriptor;
+fn point(p: &PointRuns) -> Option<Point> {
+    let d = &p.spec.descriptor;
     let s = packing::described(d)?;
-    // The measured values of a result (a run writes NaN where it could not measure it).
+    let runs = p.outs.len();
+    // The measured values of a result (a run writes NaN where it could not
+    // measure it), and those only if every run measured it.
     let of = |name: &str| -> Vec<f64> {
-        rs.iter()
-            .filter_map(|(_, o)| o.scalar(name))
+        (p.outs.iter().filter_map(|o| o.scalar(name)))
             .filter(|v| !v.is_nan())
             .collect()
     };
-    // A result only if every run measured it.
-    let every = |name: &str| Some(of(name)).filter(|v| v.len() == rs.len());
-    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let every = |name: &str| Some(of(name)).filter(|v| v.len() == runs);
+    let mean = |name: &str| p.stat(name).mean;
     // The runs' standard errors combined into that of their mean.
     let combined = |name: &str| {
         every(name).map_or(f64::NAN, |v| {
-            v.iter().map(|s| s * s).sum::<f64>().sqrt() / rs.len() as f64
+            v.iter().map(|s| s * s).sum::<f64>().sqrt() / runs as f64
         })
     };
-    let runs = rs.len() as f64;
     let duration = d.run.duration.unwrap_or(f64::NAN);
-    let collisions: f64 = rs.iter().map(|(_, o)| o.collisions as f64).sum();
-    let paired: Vec<f64> = rs
-        .iter()
-        .filter_map(|(_, o)| Some(o.scalar("Z_wall")? - o.scalar("Z_virial")?))
-        .filter(|v| !v.is_nan())
+    let paired: Option<Vec<f64>> = (p.outs.iter())
+        .map(|o| Some(o.scalar("Z_wall")? - o.scalar("Z_virial")?).filter(|v| !v.is_nan()))
         .collect();
-    let example = rs[0].1.series.iter().find_map(|s| {
+    let example = p.outs[0].series.iter().find_map(|s| {
         ["wall_pressure", "virial_pressure"]
             .contains(&s.observable.as_str())
-            .then(|| (s.observable.clone(), s.t.clone(), s.value.clone()))
+            .then(|| (s.t.clone(), s.value.clone()))
     });
     Some(Point {
         dimension: s.dimension,
         particles: s.particles,
-        eta: mean(&of("packing_fraction")),
+        eta: mean("packing_fraction"),
         walls: s.walls,
         start: match s.scene.placement {
             Some(Placement::Compress { .. }) => "compressed",
             Some(Placement::Lattice { .. }) => "lattice",
             _ => "random",
         },
-        z: Stats::of(&of("Z")),
+        z: p.stat("Z"),
         block_stderr: combined("Z_block_stderr"),
         run_stderr: combined("Z_run_stderr"),
         run_basis: if s.dimension == 1 && s.walls {
@@ -136,18 +145,18 @@ fn point(rs: &[&(RunSpec, RunOutput)]) -> Option<Point> {
         } else {
             "blocks"
         },
-        block_time: mean(&of("block_time")),
+        block_time: mean("block_time"),
         block_doubling: every("block_doubling")
             .map_or(f64::NAN, |v| v.iter().copied().fold(0.0, f64::max)),
         equilibrate: d.run.equilibrate,
-        cut: mean(&of("equilibration_cut")),
+        cut: mean("equilibration_cut"),
         drift: of("Z_drift").iter().map(|x| x.abs()).fold(0.0, f64::max),
-        collision_rate: collisions / (s.particles as f64 * duration * runs),
-        prepare_per_particle: mean(&of("prepare_collisions")) / s.particles as f64,
-        wall_minus_virial: (paired.len() == rs.len()).then(|| Stats::of(&paired)),
+        collision_rate: p.collisions() as f64 / (s.particles as f64 * duration * runs as f64),
+        prepare_per_particle: mean("prepare_collisions") / s.particles as f64,
+        wall_minus_virial: paired.map(|v| Stats::of(&v)),
         z_wall: every("Z_wall").map(|v| Stats::of(&v)),
         z_virial: every("Z_virial").map(|v| Stats::of(&v)),
-        cpu_seconds: rs.iter().map(|(_, o)| o.cpu_seconds).sum(),
+        cpu_seconds: p.cpu(),
         example,
     })
 }
@@ -170,8 +179,7 @@ pub(super) mod tests {
                 mean: z,
                 std: err * 8f64.sqrt(),
                 stderr: err,
-                ci_low: f64::NAN,
-                ci_high: f64::NAN,
+                ..Stats::of(&[])
             },
             block_stderr: err,
             run_stderr: err,

@@ -9,14 +9,15 @@ use super::equations::{self, Equation};
 use super::finite_size::{self, Fit};
 use super::phases;
 use super::points::{self, Point, TRUSTED_REPLICAS};
-use crate::model::report::{Figure, ReportSection};
-use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
+use crate::model::report::ReportSection;
+use crate::stats::ensemble::Runs;
 use crate::stats::fill::fill;
 use crate::stats::format::{num, pm};
 use crate::stats::mser;
+use crate::stats::named::named;
 use crate::stats::summary::{Stats, z_score};
 use crate::stats::table::table_row;
+use crate::studies::curves::show;
 use std::fmt::Write;
 
 const INTRO: &str = include_str!("intro.md");
@@ -27,6 +28,8 @@ const WALLS: &str = include_str!("walls.md");
 const FINITE_SIZE: &str = include_str!("finite_size.md");
 const LOOP: &str = include_str!("loop.md");
 const METHODS: &str = include_str!("methods.md");
+/// The sentences and cells that carry numbers, one per line by name.
+const SENTENCES: &str = include_str!("sentences.md");
 
 /// A point's |drift| (second half against first, in error units) above
 /// which it is flagged as still relaxing.
@@ -35,37 +38,23 @@ const DRIFT: f64 = 4.0;
 /// Standard errors from which a loop's height counts as resolved.
 const RESOLVED: f64 = 4.0;
 
-pub fn section(runs: &[(RunSpec, RunOutput)]) -> anyhow::Result<ReportSection> {
+pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
     let all = points::points(runs);
     let fits = finite_size::fits(&all);
     let dense = dense_disks(&all);
-    let mut md = format!("\n{INTRO}");
     let examples = time_examples(&all);
-    let charts = [
-        (
-            "pressure_z",
-            (!all.is_empty()).then(|| charts::z_chart(&all)),
-        ),
-        ("pressure_deviation", charts::deviation_chart(&all)),
-        (
-            "pressure_time",
-            (!examples.is_empty()).then(|| charts::time_chart(&examples)),
-        ),
-        (
-            "pressure_finite_size",
-            (!fits.is_empty()).then(|| charts::finite_size_chart(&fits)),
-        ),
-        (
-            "pressure_dense_disks",
-            (dense.len() >= 3).then(|| charts::dense_disks_chart(&dense)),
-        ),
+    let drawn = [
+        (!all.is_empty()).then(|| charts::z_chart(&all)),
+        charts::deviation_chart(&all),
+        (!examples.is_empty()).then(|| charts::time_chart(&examples)),
+        (!fits.is_empty()).then(|| charts::finite_size_chart(&fits)),
+        (dense.len() >= 3).then(|| charts::dense_disks_chart(&dense)),
     ];
+    let mut md = format!("\n{INTRO}");
     let mut figures = Vec::new();
-    for ((name, chart), caption) in charts.into_iter().zip(CAPTIONS.lines()) {
-        if let Some(chart) = chart {
-            let file = format!("{name}.svg");
-            let _ = writeln!(md, "![{caption}]({file})\n");
-            figures.push(Figure { file, chart });
+    for (figure, caption) in drawn.into_iter().zip(CAPTIONS.lines()) {
+        if let Some(figure) = figure {
+            md.push_str(&show(&mut figures, figure, caption));
         }
     }
     md.push_str(&headline(&all));
@@ -102,25 +91,28 @@ fn methods() -> String {
     )
 }
 
+/// The sentence of SENTENCES named `name` with its numbers.
+fn sentence(name: &str, values: &[(&str, String)]) -> String {
+    fill(named(SENTENCES, name), values)
+}
+
+/// The smallest and largest of `v`, as the report writes them.
+fn range(v: &[f64]) -> [String; 2] {
+    let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
+    [num(lo), num(v.iter().copied().fold(0.0, f64::max))]
+}
+
 /// Up to four runs for the pressure-against-time figure: a rod point, the
 /// walled disks (wall pressure), a disk and a sphere point.
 fn time_examples(all: &[Point]) -> Vec<(&Point, &str)> {
-    let pick = |f: &dyn Fn(&Point) -> bool| all.iter().filter(|p| f(p)).last();
-    [
-        (pick(&|p| p.dimension == 1), "rods, walls"),
-        (pick(&|p| p.dimension == 2 && p.walls), "disks, walls"),
-        (
-            pick(&|p| p.dimension == 2 && !p.walls && p.particles < 1000),
-            "disks, virial",
-        ),
-        (
-            pick(&|p| p.dimension == 3 && phases::is_fluid(3, p.eta)),
-            "spheres, virial",
-        ),
-    ]
-    .into_iter()
-    .filter_map(|(p, label)| Some((p?, label)))
-    .collect()
+    let pick = |label, f: fn(&Point) -> bool| Some((all.iter().rfind(|p| f(p))?, label));
+    let picks = [
+        pick("rods, walls", |p| p.dimension == 1),
+        pick("disks, walls", |p| p.dimension == 2 && p.walls),
+        pick("disks, virial", |p| p.dimension == 2 && !p.walls && p.particles < 1000),
+        pick("spheres, virial", |p| p.dimension == 3 && phases::is_fluid(3, p.eta)),
+    ];
+    picks.into_iter().flatten().collect()
 }
 
 /// The periodic disks of the largest N with at least 1000 disks, from
@@ -137,28 +129,23 @@ fn dense_disks(all: &[Point]) -> Vec<&Point> {
 
 /// How precise the fluid points are and what they cost.
 fn headline(all: &[Point]) -> String {
-    let fluid: Vec<&Point> = all
-        .iter()
-        .filter(|p| {
-            (p.dimension == 1 || !p.walls)
-                && phases::is_fluid(p.dimension, p.eta)
-                && p.eta <= equations::of(p.dimension)[0].holds_below
-        })
+    let fluid: Vec<&Point> = (all.iter())
+        .filter(|p| p.bulk() && phases::is_fluid(p.dimension, p.eta) && p.reference_holds())
         .collect();
     if fluid.is_empty() {
         return String::new();
     }
     let rel: Vec<f64> = fluid.iter().map(|p| p.error().0 / p.z.mean).collect();
-    let total: f64 = all.iter().map(|p| p.cpu_seconds).sum();
-    format!(
-        "**Precision.** At the {} fluid points where a reference equation holds, the relative standard error of Z is {} to {}; {} of them reach 1e-4. They cost {} CPU seconds of the study's {}.\n",
-        fluid.len(),
-        num(rel.iter().copied().fold(f64::INFINITY, f64::min)),
-        num(rel.iter().copied().fold(0.0, f64::max)),
-        rel.iter().filter(|r| **r <= 1.05e-4).count(),
-        num(fluid.iter().map(|p| p.cpu_seconds).sum()),
-        num(total)
-    )
+    let [lo, hi] = range(&rel);
+    let values = [
+        ("points", fluid.len().to_string()),
+        ("lo", lo),
+        ("hi", hi),
+        ("reach", rel.iter().filter(|r| **r <= 1.05e-4).count().to_string()),
+        ("cpu", num(fluid.iter().map(|p| p.cpu_seconds).sum())),
+        ("total", num(all.iter().map(|p| p.cpu_seconds).sum())),
+    ];
+    sentence("precision", &values) + "\n"
 }
 
 /// z of `stats` against `theory` to one decimal, "–" without one.
@@ -169,42 +156,35 @@ fn z_text(stats: &Stats, theory: f64) -> String {
 /// One dimension's points: Z against each of its equations.
 fn table(d: usize, pts: &[&Point]) -> String {
     let eqs = equations::of(d);
-    let mut md = format!(
-        "\n### {}\n\n| η | N | start | phase | Z | error from | rel. error | runs' own error (block; ×2 ratio) | discarded | MSER cut | max \\|drift\\| |",
-        NAMES[d - 1]
-    );
-    for e in eqs {
-        let _ = write!(md, " {} (z) |", e.name);
-    }
-    let _ = writeln!(md, " CPU s | note |\n|{}", "---|".repeat(13 + eqs.len()));
+    let heads: Vec<String> = eqs.iter().map(|e| format!("{} (z)", e.name)).collect();
+    let head = sentence("table", &[("equations", heads.join(" | "))]);
+    let rule = "---|".repeat(13 + eqs.len());
+    let mut md = format!("\n### {}\n\n{head}\n|{rule}\n", NAMES[d - 1]);
     for p in pts {
         let (err, from) = p.error();
         let start = match p.start {
-            "compressed" => format!(
-                "compressed ({} coll./particle)",
-                num(p.prepare_per_particle)
-            ),
+            "compressed" => format!("compressed ({} coll./particle)", num(p.prepare_per_particle)),
             other => other.to_string(),
         };
-        let _ = write!(
-            md,
-            "| {} | {} | {start} | {} | {} | {from} ({}) | {} | {} | {} | {} | {} |",
+        let mut cells = vec![
             num(p.eta),
-            p.particles,
-            phases::label(d, p.eta),
+            p.particles.to_string(),
+            start,
+            phases::label(d, p.eta).into(),
             pm(p.z.mean, err),
-            p.z.n,
+            format!("{from} ({})", p.z.n),
             num(err / p.z.mean),
             block(p),
             discarded(p),
             num(p.cut),
             num(p.drift),
-        );
-        for e in eqs {
+        ];
+        cells.extend(eqs.iter().map(|e| {
             let theory = (e.z)(p.eta);
-            let _ = write!(md, " {} ({}) |", num(theory), z_text(&p.z_stats(), theory));
-        }
-        let _ = writeln!(md, " {} | {} |", num(p.cpu_seconds), note(eqs, p));
+            format!("{} ({})", num(theory), z_text(&p.z_stats(), theory))
+        }));
+        cells.extend([num(p.cpu_seconds), note(eqs, p)]);
+        md.push_str(&table_row(&cells));
     }
     md
 }
@@ -240,32 +220,25 @@ fn discarded(p: &Point) -> String {
 /// The phase, equations beyond their range, and any sign of a run not in
 /// equilibrium.
 fn note(eqs: &[Equation], p: &Point) -> String {
-    let mut notes = Vec::new();
-    if !phases::is_fluid(p.dimension, p.eta) {
-        let phase = phases::label(p.dimension, p.eta);
-        notes.push(format!(
-            "not the stable fluid ({phase}): no fluid equation applies"
-        ));
-    }
     let beyond: Vec<&str> = (eqs.iter().filter(|e| p.eta > e.holds_below))
         .map(|e| e.name)
         .collect();
-    if !beyond.is_empty() {
-        notes.push(format!("beyond the range of {}", beyond.join(", ")));
-    }
-    if p.drift > DRIFT {
-        let drift = num(p.drift);
-        notes.push(format!(
-            "drifting: a run's halves differ by {drift} error bars"
-        ));
-    }
-    if p.error().1 != "replicas" {
-        notes.push(format!(
-            "the {} replicas scatter less than their runs' own error ({}): that error used",
-            p.z.n,
-            num(p.z.stderr)
-        ));
-    }
+    let values = [
+        ("phase", phases::label(p.dimension, p.eta).to_string()),
+        ("beyond", beyond.join(", ")),
+        ("drift", num(p.drift)),
+        ("n", p.z.n.to_string()),
+        ("stderr", num(p.z.stderr)),
+    ];
+    let notes = [
+        ("not_fluid", !phases::is_fluid(p.dimension, p.eta)),
+        ("beyond", !beyond.is_empty()),
+        ("drifting", p.drift > DRIFT),
+        ("own_error", p.error().1 != "replicas"),
+    ];
+    let notes: Vec<String> = (notes.iter().filter(|(_, shown)| *shown))
+        .map(|(name, _)| sentence(name, &values))
+        .collect();
     notes.join("; ")
 }
 
@@ -304,32 +277,26 @@ fn finite_size_table(fits: &[Fit]) -> String {
         let eqs: Vec<String> = (equations::of(f.dimension).iter())
             .map(|e| {
                 let t = (e.z)(f.eta);
-                let z = (f.z_inf - t) / f.z_inf_err;
-                format!("{} {} ({z:+.1})", e.name, num(t))
+                format!("{} {} ({:+.1})", e.name, num(t), (f.z_inf - t) / f.z_inf_err)
             })
             .collect();
-        let mut chi2 = if f.dof > 0 {
-            format!("{} ({})", num(f.chi2), f.dof)
-        } else {
-            "– (0)".into()
+        let mut chi2 = match f.dof {
+            0 => "– (0)".into(),
+            dof => format!("{} ({dof})", num(f.chi2)),
         };
-        for (n, c, dof) in &f.left_out {
-            let c = num(*c);
-            let _ = write!(
-                chi2,
-                "; N = {n} left out (the line through it: χ² {c} for {dof}, beyond its 99 % point)"
-            );
+        for &(n, c, dof) in &f.left_out {
+            let values = [("n", n.to_string()), ("chi2", num(c)), ("dof", dof.to_string())];
+            chi2 += &sentence("left_out", &values);
         }
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {} | {} | {chi2} | {} |",
-            f.dimension,
+        md.push_str(&table_row(&[
+            f.dimension.to_string(),
             num(f.eta),
             data.join("; "),
             pm(f.z_inf, f.z_inf_err),
             pm(f.slope, f.slope_err),
-            eqs.join("; ")
-        );
+            chi2,
+            eqs.join("; "),
+        ]));
     }
     md
 }
@@ -349,85 +316,68 @@ fn loop_text(pts: &[&Point]) -> String {
     let mut md = fill(LOOP, &[("n", pts[0].particles.to_string())]);
     for q in pts {
         let (v, e) = pressure(q);
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {} ({}) | {} | {} | {} | {} |",
+        md.push_str(&table_row(&[
             num(q.eta),
-            phases::label(2, q.eta),
+            phases::label(2, q.eta).into(),
             pm(v, e),
-            q.error().1,
-            q.z.n,
+            format!("{} ({})", q.error().1, q.z.n),
             num(q.equilibrate),
             num(q.cut),
             num(q.drift),
-            num(q.cpu_seconds)
-        );
+            num(q.cpu_seconds),
+        ]));
     }
-    let mut best: Option<(usize, usize, f64, f64)> = None;
-    for i in 0..pts.len() {
-        for j in i + 1..pts.len() {
-            let ((pi, ei), (pj, ej)) = (pressure(pts[i]), pressure(pts[j]));
-            if pi - pj > 0.0 && best.is_none_or(|b| pi - pj > b.2) {
-                best = Some((i, j, pi - pj, ei.hypot(ej)));
-            }
-        }
-    }
-    md.push('\n');
-    match best {
-        Some((i, j, drop, err)) => {
-            let at =
-                |q: &Point| format!("{} at η = {}", pm(pressure(q).0, pressure(q).1), num(q.eta));
-            let _ = write!(
-                md,
-                "**Loop height.** βPσ² falls from {} to {}, by {}: {} standard errors, the largest fall between any two of the {} points (a pure-noise curve would show a fall of a standard error or two). ",
-                at(pts[i]),
-                at(pts[j]),
-                pm(drop, err),
-                num(drop / err),
-                pts.len()
-            );
-            md.push_str(if drop / err >= RESOLVED {
-                "The loop is resolved."
-            } else {
-                "That is within the noise: no loop is resolved."
-            });
-            let drift = pts[i].drift.max(pts[j].drift);
-            if drift > DRIFT {
-                let _ = write!(
-                    md,
-                    " Its points drift (max |drift| {}, over the flag at {}): they still relax, and the height is less certain than its error bar.",
-                    num(drift),
-                    num(DRIFT)
-                );
-            } else if drift > 0.0 {
-                let _ = write!(
-                    md,
-                    " Both its points pass the drift test (max |drift| {}, under the flag at {}).",
-                    num(drift),
-                    num(DRIFT)
-                );
-            }
-        }
-        None => md.push_str("Here βPσ² rises at every step: no loop is resolved."),
-    }
+    // The first of the largest falls, from a point to a denser one.
+    let falls = (0..pts.len()).flat_map(|i| (i + 1..pts.len()).map(move |j| (i, j)));
+    let best = (falls.map(|(i, j)| (i, j, pressure(pts[i]).0 - pressure(pts[j]).0)))
+        .filter(|f| f.2 > 0.0)
+        .reduce(|a, b| if b.2 > a.2 { b } else { a });
     let errors: Vec<f64> = pts.iter().map(|q| pressure(q).1).collect();
-    let _ = writeln!(
-        md,
-        " The error bars of βPσ² are {} to {}.",
-        num(errors.iter().copied().fold(f64::INFINITY, f64::min)),
-        num(errors.iter().copied().fold(0.0, f64::max))
-    );
+    let [lo, hi] = range(&errors);
+    let mut values = vec![("lo", lo), ("hi", hi), ("flag", num(DRIFT))];
+    let said = match best {
+        Some((i, j, drop)) => {
+            let err = pressure(pts[i]).1.hypot(pressure(pts[j]).1);
+            let at = |q: &Point| {
+                let (v, e) = pressure(q);
+                format!("{} at η = {}", pm(v, e), num(q.eta))
+            };
+            let drift = pts[i].drift.max(pts[j].drift);
+            values.extend([
+                ("from", at(pts[i])),
+                ("to", at(pts[j])),
+                ("drop", pm(drop, err)),
+                ("sigmas", num(drop / err)),
+                ("points", pts.len().to_string()),
+                ("drift", num(drift)),
+            ]);
+            let resolved = if drop / err >= RESOLVED { "resolved" } else { "noise" };
+            let steady = match drift {
+                d if d > DRIFT => "loop_drifts",
+                d if d > 0.0 => "loop_steady",
+                _ => "",
+            };
+            vec!["height", resolved, steady]
+        }
+        None => vec!["rises"],
+    };
+    let text: Vec<String> = (said.into_iter().chain(["error_bars"]))
+        .filter(|name| !name.is_empty())
+        .map(|name| sentence(name, &values))
+        .collect();
+    let _ = writeln!(md, "\n{}", text.join(" "));
     md
 }
 
 #[cfg(test)]
 mod tests {
-    use crate::stats::fill::unfilled;
+    use crate::stats::fill::{fill, unfilled};
+    use crate::stats::named::{named, names};
 
     #[test]
     fn every_placeholder_is_filled() {
         assert!(unfilled(&super::methods()).is_empty());
-        let text = crate::stats::fill::fill(super::LOOP, &[("n", "1024".into())]);
+        let text = fill(super::LOOP, &[("n", "1024".into())]);
         assert!(unfilled(&text).is_empty());
         for text in [
             super::INTRO,
@@ -436,6 +386,15 @@ mod tests {
             super::FINITE_SIZE,
         ] {
             assert!(unfilled(text).is_empty());
+        }
+        let keys = [
+            "points", "lo", "hi", "reach", "cpu", "total", "equations", "phase", "beyond",
+            "drift", "n", "stderr", "from", "to", "drop", "sigmas", "flag", "chi2", "dof",
+        ];
+        let values = keys.map(|k| (k, "x".to_string()));
+        for name in names(super::SENTENCES) {
+            let filled = fill(named(super::SENTENCES, name), &values);
+            assert!(unfilled(&filled).is_empty(), "{filled}");
         }
     }
 }
