@@ -3,7 +3,7 @@
 //! prose is in the Markdown files beside this one.
 
 use super::RESULTS;
-use super::charts::{self, Runs};
+use super::charts;
 use super::dimple::{self, central_share, has_dimple, independent_samples};
 use super::ensemble::Ensemble;
 use super::measure::histogram;
@@ -12,14 +12,14 @@ use super::tests_of::{MIN_EXPECTED, Particle, Tests, tests_of};
 use crate::model::chart::ChartSpec;
 use crate::model::report::{Figure, ReportSection};
 use crate::model::run_output::RunOutput;
-use crate::model::run_spec::RunSpec;
 use crate::stats::ensemble::Runs as AllRuns;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
 use crate::stats::named::named;
+use crate::stats::point_runs::{PointRuns, by_point};
 use crate::stats::replicas::Agreement;
-use crate::stats::summary::{Stats, scalar};
-use std::collections::BTreeMap;
+use crate::stats::table::table_row;
+use crate::studies::curves::show;
 use std::fmt::Write;
 
 /// |z| beyond this rejects a law (about 4 standard deviations).
@@ -32,6 +32,8 @@ const INTRO: &str = include_str!("intro.md");
 const ROD_HEAD: &str = include_str!("rods.md");
 const DIMPLE_HEAD: &str = include_str!("dimple.md");
 const DIMPLE_PARTICLE: &str = include_str!("dimple_particle.md");
+/// A dimple table row, and the conclusion's parts on the fewest and the
+/// most samples per run.
 const DIMPLE_ANSWER: &str = include_str!("dimple_answer.md");
 const FLUID_HEAD: &str = include_str!("fluid.md");
 const SETTLING_HEAD: &str = include_str!("settling.md");
@@ -40,32 +42,12 @@ const CAPTIONS: &str = include_str!("captions.md");
 /// The sentences a finding is told in, one per outcome.
 const FINDINGS: &str = include_str!("findings.md");
 
-/// A group of runs: a case, or a sweep point.
+/// A group of runs (a case, or a sweep point), each beside its ensemble.
 struct Group<'a> {
-    point: u64,
     label: String,
     slug: String,
-    runs: Vec<(Ensemble, &'a RunOutput)>,
-}
-
-fn groups(runs: &[(RunSpec, RunOutput)]) -> Vec<Group<'_>> {
-    let mut by: BTreeMap<(bool, u64), Group> = BTreeMap::new();
-    for (spec, out) in runs {
-        let Some(e) = Ensemble::of_run(spec) else {
-            continue;
-        };
-        let kind = if spec.case.is_some() { "case" } else { "point" };
-        by.entry((spec.case.is_some(), spec.point_id))
-            .or_insert_with(|| Group {
-                point: spec.point_id,
-                label: spec.case.clone().unwrap_or_else(|| describe(&e)),
-                slug: format!("{kind}{}", spec.point_id),
-                runs: Vec::new(),
-            })
-            .runs
-            .push((e, out));
-    }
-    by.into_values().collect()
+    runs: PointRuns<'a>,
+    view: Vec<(&'a Ensemble, &'a RunOutput)>,
 }
 
 /// "200 disks, φ = 0.4, periodic" for a sweep point.
@@ -95,6 +77,10 @@ fn dash(x: f64) -> String {
     if x.is_nan() { "–".into() } else { num(x) }
 }
 
+fn opt(x: Option<f64>) -> String {
+    x.map_or("–".into(), num)
+}
+
 fn verdict(a: &Option<Agreement>) -> &'static str {
     match a {
         Some(a) if a.z.abs() < REJECT => "holds",
@@ -103,32 +89,28 @@ fn verdict(a: &Option<Agreement>) -> &'static str {
     }
 }
 
-fn stat(view: &Runs, name: &str) -> Stats {
-    scalar(view.iter().map(|(_, o)| *o), name)
-}
-
 pub fn section(runs: &AllRuns) -> anyhow::Result<ReportSection> {
     let mut p = Parts::default();
-    for g in groups(runs) {
-        let view: Vec<(&Ensemble, &RunOutput)> = g.runs.iter().map(|(e, o)| (e, *o)).collect();
-        let t = tests_of(&view);
-        let e = view[0].0;
+    for point in by_point(runs) {
+        let specs = runs.iter().filter(|(s, _)| s.point_id == point.spec.point_id);
+        let Some(ensembles) = specs.map(|(s, _)| Ensemble::of_run(s)).collect::<Option<Vec<_>>>()
+        else {
+            continue;
+        };
+        let (e, case) = (&ensembles[0], &point.spec.case);
+        let kind = if case.is_some() { "case" } else { "point" };
+        let g = Group {
+            label: case.clone().unwrap_or_else(|| describe(e)),
+            slug: format!("{kind}{}", point.spec.point_id),
+            view: ensembles.iter().zip(point.outs.iter().copied()).collect(),
+            runs: point,
+        };
+        let t = tests_of(&g.view);
         let _ = writeln!(p.pictures, "#### {}\n", g.label);
         if e.dimension == 1 && !t.particles.is_empty() {
-            p.rods(&g, &view, &t);
-        } else if e.dimension > 1
-            && let Some((time, mean)) = runs.mean(g.point, "speed_std")
-        {
-            p.settling(&g, &view, &time, &mean);
-            if let Some((time, energy)) = runs.mean(g.point, "kinetic_energy") {
-                let start = energy.first().map_or(f64::NAN, |s| s.mean);
-                let drift = (energy.iter()).fold(0.0, |d, s| f64::max(d, (s.mean - start).abs()));
-                let title = format!("{}: total energy", g.label);
-                let chart = charts::settling(&title, &time, &energy, "total kinetic energy", None);
-                p.figure_with(&g, "energy", Some(chart), ("drift", num(drift / start)));
-            }
-        } else if e.dimension > 1 {
-            p.fluid(&g, &view, &t);
+            p.rods(&g, &t);
+        } else if e.dimension > 1 && !p.settling(&g) {
+            p.fluid(&g, &t);
         }
     }
     Ok(ReportSection {
@@ -145,7 +127,6 @@ struct Parts {
     rods: String,
     per_particle: String,
     dimple: String,
-    dimple_rows: String,
     dimples: Vec<Dimples>,
     fluid: String,
     settling: String,
@@ -162,11 +143,14 @@ impl Parts {
             md.push('\n');
             md += &self.per_particle;
         }
-        if !self.dimple.is_empty() || !self.dimple_rows.is_empty() {
+        if !self.dimple.is_empty() || !self.dimples.is_empty() {
             md += "### The dimple in P(v₁)\n\n";
             md += &self.dimple;
             md += &fill(DIMPLE_HEAD, &[("trials", DIMPLE_TRIALS.to_string())]);
-            md += &self.dimple_rows;
+            for d in &self.dimples {
+                md += &fill(named(DIMPLE_ANSWER, "row"), &d.values());
+                md.push('\n');
+            }
             md += &dimple_answer(&self.dimples);
             md.push('\n');
         }
@@ -182,48 +166,47 @@ impl Parts {
         md + METHODS
     }
 
-    /// A group's figure, if its chart could be drawn, with its caption.
-    fn figure(&mut self, g: &Group, name: &str, chart: Option<ChartSpec>) {
-        self.figure_with(g, name, chart, ("", String::new()));
+    /// A group's figure, if its chart could be drawn, titled "label: what",
+    /// with its caption.
+    fn figure(&mut self, g: &Group, name: &str, what: &str, chart: Option<ChartSpec>) {
+        self.figure_with(g, name, what, chart, ("", String::new()));
     }
 
+    /// The same with one more value for the caption.
     fn figure_with(
         &mut self,
         g: &Group,
         name: &str,
+        what: &str,
         chart: Option<ChartSpec>,
         extra: (&str, String),
     ) {
-        let Some(chart) = chart else { return };
+        let Some(mut chart) = chart else { return };
+        chart.title = format!("{}: {what}", g.label);
         let file = format!("equilibrium_{}_{name}.svg", g.slug);
         let values = [
             ("label", g.label.clone()),
-            ("replicas", g.runs.len().to_string()),
-            ("dimension", g.runs[0].0.dimension.to_string()),
+            ("replicas", g.view.len().to_string()),
+            ("dimension", g.view[0].0.dimension.to_string()),
             extra,
         ];
-        let _ = writeln!(
-            self.pictures,
-            "![{}]({file})\n",
-            fill(named(CAPTIONS, name), &values)
-        );
-        self.figures.push(Figure { file, chart });
+        let caption = fill(named(CAPTIONS, name), &values);
+        self.pictures += &show(&mut self.figures, Figure { file, chart }, &caption);
     }
 
-    fn rods(&mut self, g: &Group, view: &Runs, t: &Tests) {
-        self.rod_rows(g, view, t);
-        let title = |what: &str| format!("{}: {what}", g.label);
+    fn rods(&mut self, g: &Group, t: &Tests) {
+        self.rod_rows(g, t);
+        let view = &g.view[..];
         let light = |r: usize| view[r].0.lightest().map(|b| (b.index, b.mass));
         let heavy = |r: usize| view[r].0.heaviest().map(|b| (b.index, b.mass));
         let whole = [("", charts::MEASURED)];
-        let chart = charts::velocity(&title("lightest particle's vₓ"), view, &light, &whole);
-        self.figure(g, "light", chart);
-        let chart = charts::velocity(&title("heaviest particle's vₓ"), view, &heavy, &whole);
-        self.figure(g, "heavy", chart);
-        let chart = charts::std_against_mass(&title("velocity std against mass"), view);
-        self.figure(g, "std", chart);
-        let chart = charts::positions(&title("each rod's position"), view);
-        self.figure(g, "positions", chart);
+        let chart = charts::velocity(view, &light, &whole);
+        self.figure(g, "light", "lightest particle's vₓ", chart);
+        let chart = charts::velocity(view, &heavy, &whole);
+        self.figure(g, "heavy", "heaviest particle's vₓ", chart);
+        let chart = charts::std_against_mass(view);
+        self.figure(g, "std", "velocity std against mass", chart);
+        self.figure(g, "positions", "each rod's position", charts::positions(view));
         let ranked = view[0].0.by_rank();
         let name = |kind: &str, rank: usize| format!("{kind}.{}", ranked[rank].index);
         let last = ranked.len() - 1;
@@ -237,58 +220,49 @@ impl Parts {
         ];
         let what = format!("positions of particles 1 and 2, {last} and {}", last + 1);
         let axes = ("x of the left one [σ]", "x of the right one [σ]");
-        self.figure(
-            g,
-            "scatter_x",
-            charts::scatter(&title(&what), view, &sets, axes),
-        );
+        self.figure(g, "scatter_x", &what, charts::scatter(view, &sets, axes));
         let sets = [(name("v", 0), name("v", 1), "(v₁, v₂)".into())];
-        let chart = charts::scatter(&title("v₁ against v₂"), view, &sets, ("v₁", "v₂"));
-        self.figure(g, "scatter_v", chart);
+        let chart = charts::scatter(view, &sets, ("v₁", "v₂"));
+        self.figure(g, "scatter_v", "v₁ against v₂", chart);
         let sets = [(name("x", 0), name("v", 0), "(x₁, v₁)".into())];
-        let chart = charts::scatter(&title("x₁ against v₁"), view, &sets, ("x₁ [σ]", "v₁"));
-        self.figure(g, "scatter_xv", chart);
-        self.dimples(&g.label, view, t);
+        let chart = charts::scatter(view, &sets, ("x₁ [σ]", "v₁"));
+        self.figure(g, "scatter_xv", "x₁ against v₁", chart);
+        self.dimples(g, t);
         let Some(p) = (t.particles.iter()).find(|p| p.rank == 0 && p.halves.is_some()) else {
             return;
         };
         let first = |r: usize| view[r].0.ball(p.index).map(|b| (b.index, b.mass));
         let halves = [("_early", "first half"), ("_late", "second half")];
-        let what = "P(v₁), first and second halves";
-        let chart = charts::velocity(&title(what), view, &first, &halves);
-        self.figure(g, "dimple", chart);
+        let chart = charts::velocity(view, &first, &halves);
+        self.figure(g, "dimple", "P(v₁), first and second halves", chart);
         self.dimple += &dimple_text(&g.label, p, view[0].0);
     }
 
-    fn rod_rows(&mut self, g: &Group, view: &Runs, t: &Tests) {
-        let e = view[0].0;
+    fn rod_rows(&mut self, g: &Group, t: &Tests) {
+        let e = g.view[0].0;
         let zs = |f: fn(&Particle) -> Option<Agreement>| t.particles.iter().filter_map(f);
-        let worst = |f| zs(f).map(|a| a.z).fold(f64::NAN, f64::max);
-        let least = |f| zs(f).map(|a| a.z).fold(f64::NAN, f64::min);
-        let (ratio, kurt) = (stat(view, "std_ratio"), stat(view, "kurtosis_lightest"));
-        let cost: f64 = view.iter().map(|(_, o)| o.cpu_seconds).sum();
-        let collisions: u64 = view.iter().map(|(_, o)| o.collisions).sum();
-        let _ = writeln!(
-            self.rods,
-            "| {} | {} | {} | {} | {} – {} | {} | {} | {} | {} ({}) | {} | {} | {} | {} | {} s, {} collisions |",
-            g.label,
-            e.balls.len(),
-            e.dof,
-            view.len(),
-            num(stat(view, "lightest_mass").mean),
-            num(stat(view, "heaviest_mass").mean),
+        let worst = |f| dash(zs(f).map(|a| a.z).fold(f64::NAN, f64::max));
+        let least = |f| dash(zs(f).map(|a| a.z).fold(f64::NAN, f64::min));
+        let (ratio, kurt) = (g.runs.stat("std_ratio"), g.runs.stat("kurtosis_lightest"));
+        let means = ["lightest_mass", "heaviest_mass", "sqrt_mass_ratio", "std_ratio_exact"];
+        let [light, heavy, root, exact] = means.map(|n| num(g.runs.stat(n).mean));
+        let row = [
+            g.label.clone(),
+            e.balls.len().to_string(),
+            e.dof.to_string(),
+            g.view.len().to_string(),
+            format!("{light} – {heavy}"),
             pm(ratio.mean, ratio.stderr),
-            num(stat(view, "sqrt_mass_ratio").mean),
-            num(stat(view, "std_ratio_exact").mean),
-            pm(kurt.mean, kurt.stderr),
-            num(-6.0 / (e.dof + 2.0)),
-            dash(worst(|p| p.exact)),
-            dash(least(|p| p.gaussian)),
+            root,
+            exact,
+            format!("{} ({})", pm(kurt.mean, kurt.stderr), num(-6.0 / (e.dof + 2.0))),
+            worst(|p| p.exact),
+            least(|p| p.gaussian),
             z_text(&t.positions),
-            dash(worst(|p| p.halves)),
-            num(cost),
-            count(collisions),
-        );
+            worst(|p| p.halves),
+            format!("{} s, {} collisions", num(g.runs.cpu()), count(g.runs.collisions())),
+        ];
+        self.rods += &table_row(&row);
         let tested = |p: &Particle| p.exact.is_some() || p.gaussian.is_some() || p.halves.is_some();
         let tested = t.particles.iter().any(tested);
         let values = [
@@ -303,33 +277,26 @@ impl Parts {
         self.per_particle += "| rank | mass | z exact | z Gaussian | z halves |\n";
         self.per_particle += "|---|---|---|---|---|\n";
         for p in &t.particles {
-            let _ = writeln!(
-                self.per_particle,
-                "| {} | {} | {} | {} | {} |",
-                p.rank + 1,
-                num(p.mass),
-                z_text(&p.exact),
-                z_text(&p.gaussian),
-                z_text(&p.halves)
-            );
+            let z = [p.exact, p.gaussian, p.halves].map(|a| z_text(&a)).join(" | ");
+            let _ = writeln!(self.per_particle, "| {} | {} | {z} |", p.rank + 1, num(p.mass));
         }
         self.per_particle.push('\n');
     }
 
     /// How often particle 1's histogram shows a dimple over the replicas,
     /// and how often independent draws from the exact law would, as many.
-    fn dimples(&mut self, label: &str, view: &Runs, t: &Tests) {
+    fn dimples(&mut self, g: &Group, t: &Tests) {
         let Some(p) = t.particles.iter().find(|p| p.rank == 0) else {
             return;
         };
         let name = format!("velocity_x.{}", p.index);
-        let hists: Vec<&[f64]> = (view.iter())
+        let hists: Vec<&[f64]> = (g.view.iter())
             .filter_map(|(_, o)| histogram(o, &name))
             .map(|h| h.count.as_slice())
             .collect();
         let Some(first) = hists.first() else { return };
         let samples = first.iter().sum::<f64>();
-        let dof = view[0].0.dof;
+        let dof = g.view[0].0.dof;
         // The bins span ±min(reach, 6 std) (velocity_x_each), in reach units.
         let half = (6.0 / dof.sqrt()).min(1.0);
         let chance = |n: f64| {
@@ -339,97 +306,78 @@ impl Parts {
         };
         let shares: Vec<f64> = hists.iter().map(|h| central_share(h)).collect();
         let independent = independent_samples(&shares);
-        let d = Dimples {
-            label: label.into(),
-            particles: view[0].0.balls.len(),
+        self.dimples.push(Dimples {
+            label: g.label.clone(),
+            particles: g.view[0].0.balls.len(),
             samples,
             seen: hists.iter().filter(|h| has_dimple(h)).count(),
             runs: hists.len(),
             independent,
             chance: chance(samples),
             chance_independent: chance(independent),
-        };
-        let _ = writeln!(
-            self.dimple_rows,
-            "| {label} | {} | {} of {} | {} | {} | {} |",
-            num(samples),
-            d.seen,
-            d.runs,
-            opt(d.chance),
-            num(independent),
-            opt(d.chance_independent)
-        );
-        self.dimples.push(d);
+        });
     }
 
-    /// A row of the equilibration table and the figure of the speeds' std.
-    fn settling(&mut self, g: &Group, view: &Runs, time: &[f64], mean: &[Stats]) {
-        let e = view[0].0;
-        let n = view.len() as f64;
-        let kt = view.iter().map(|(e, _)| e.kt().sqrt()).sum::<f64>() / n;
+    /// A row of the equilibration table and the figures of the speeds' std
+    /// and the total energy; false if the group has no speeds' std.
+    fn settling(&mut self, g: &Group) -> bool {
+        let (time, mean) = g.runs.mean_curve("speed_std");
+        if mean.is_empty() {
+            return false;
+        }
+        let (e, n) = (g.view[0].0, g.view.len() as f64);
+        let kt = g.view.iter().map(|(e, _)| e.kt().sqrt()).sum::<f64>() / n;
         let reference = settling::maxwell_speed_std(e.dimension) * kt;
-        let (level, tau) = settling::equilibration(time, mean);
+        let (level, tau) = settling::equilibration(&time, &mean);
         let duration = time.last().copied().unwrap_or(f64::NAN);
-        let collisions = view.iter().map(|(_, o)| o.collisions as f64).sum::<f64>() / n;
-        let cpu: f64 = view.iter().map(|(_, o)| o.cpu_seconds).sum();
-        let _ = writeln!(
-            self.settling,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} s |",
-            g.label,
-            e.balls.len(),
+        let collisions = g.runs.collisions() as f64 / n * tau / duration / e.balls.len() as f64;
+        let mut row = vec![
+            g.label.clone(),
+            e.balls.len().to_string(),
             num(e.packing()),
-            view.len(),
-            num(mean[0].mean),
-            num(level),
-            num(reference),
-            num(tau),
-            num(collisions * tau / duration / e.balls.len() as f64),
-            num(cpu),
-        );
+            g.view.len().to_string(),
+        ];
+        row.extend([mean[0].mean, level, reference, tau, collisions].map(num));
+        row.push(format!("{} s", num(g.runs.cpu())));
+        self.settling += &table_row(&row);
         let reference = Some((reference, "Maxwell-Boltzmann: √((2 − π/2) kT/m) in 2D"));
-        let title = format!("{}: std of the speeds", g.label);
-        let chart = charts::settling(&title, time, mean, "std of the speeds", reference);
-        self.figure(g, "speed_std", Some(chart));
+        let chart = charts::settling(&time, &mean, "std of the speeds", reference);
+        self.figure(g, "speed_std", "std of the speeds", Some(chart));
+        let (time, energy) = g.runs.mean_curve("kinetic_energy");
+        if let Some(start) = energy.first().map(|s| s.mean) {
+            let drift = (energy.iter()).fold(0.0, |d, s| f64::max(d, (s.mean - start).abs()));
+            let chart = charts::settling(&time, &energy, "total kinetic energy", None);
+            let drift = ("drift", num(drift / start));
+            self.figure_with(g, "energy", "total energy", Some(chart), drift);
+        }
+        true
     }
 
     /// A row of the disks' table and their figures.
-    fn fluid(&mut self, g: &Group, view: &Runs, t: &Tests) {
-        let e = view[0].0;
-        let s = |n: &str| match stat(view, n) {
+    fn fluid(&mut self, g: &Group, t: &Tests) {
+        let e = g.view[0].0;
+        let s = |n: &str| match g.runs.stat(n) {
             s if s.n == 0 => "–".into(),
             s => pm(s.mean, s.stderr),
         };
-        let cost: f64 = view.iter().map(|(_, o)| o.cpu_seconds).sum();
-        let _ = writeln!(
-            self.fluid,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} s |",
-            g.label,
-            e.balls.len(),
+        let mut row = vec![
+            g.label.clone(),
+            e.balls.len().to_string(),
             num(e.packing()),
-            boundary(e),
-            view.len(),
+            boundary(e).into(),
+            g.view.len().to_string(),
             num(e.kt()),
-            z_text(&t.vx_exact),
-            z_text(&t.vx_gaussian),
-            z_text(&t.speed_exact),
-            z_text(&t.speed_mb),
-            s("g_contact"),
-            s("Z_contact"),
-            s("Z_virial"),
-            s("contact_theorem_ratio"),
-            num(cost),
-        );
-        let title = |what: &str| format!("{}: {what}", g.label);
-        self.figure(g, "vx", charts::scaled_vx(&title("vₓ"), view));
-        self.figure(g, "speed", charts::speed(&title("speeds"), view));
-        let chart = charts::density(&title("density along x"), view);
-        self.figure(g, "density", chart);
-        self.figure(g, "g", charts::radial(&title("g(r)"), view, 4.0));
+        ];
+        row.extend([t.vx_exact, t.vx_gaussian, t.speed_exact, t.speed_mb].map(|a| z_text(&a)));
+        row.extend(["g_contact", "Z_contact", "Z_virial", "contact_theorem_ratio"].map(s));
+        row.push(format!("{} s", num(g.runs.cpu())));
+        self.fluid += &table_row(&row);
+        let view = &g.view[..];
+        self.figure(g, "vx", "vₓ", charts::scaled_vx(view));
+        self.figure(g, "speed", "speeds", charts::speed(view));
+        self.figure(g, "density", "density along x", charts::density(view));
+        self.figure(g, "g", "g(r)", charts::radial(view, 4.0));
     }
-}
-
-fn opt(x: Option<f64>) -> String {
-    x.map_or("–".into(), num)
 }
 
 /// One line of the dimple table, kept for the conclusion.
@@ -444,38 +392,42 @@ struct Dimples {
     chance_independent: Option<f64>,
 }
 
+impl Dimples {
+    /// What its table row and the conclusion's sentences are filled with.
+    fn values(&self) -> [(&'static str, String); 7] {
+        [
+            ("label", self.label.clone()),
+            ("samples", num(self.samples)),
+            ("seen", self.seen.to_string()),
+            ("runs", self.runs.to_string()),
+            ("chance", opt(self.chance)),
+            ("independent", num(self.independent)),
+            ("chance_independent", opt(self.chance_independent)),
+        ]
+    }
+}
+
 /// Particle 1's tests, and what its exact law looks like.
 fn dimple_text(label: &str, p: &Particle, e: &Ensemble) -> String {
-    let z = |a: &Option<Agreement>| a.map_or("–".into(), |a| num(a.z));
-    let limit = match verdict(&p.gaussian) {
-        "rejected" => "gaussian_rejected",
-        _ => "gaussian_fits",
-    };
-    let values = [
+    let rejected = verdict(&p.gaussian) == "rejected";
+    let limit = if rejected { "gaussian_rejected" } else { "gaussian_fits" };
+    let mut values = vec![
+        ("label", label.to_string()),
+        ("mass", num(p.mass)),
         ("n", e.balls.len().to_string()),
         ("limit", named(FINDINGS, limit).into()),
+        ("dof", num(e.dof)),
+        ("power", num(0.5 * (e.dof - 3.0))),
+        ("kurtosis", num(-6.0 / (e.dof + 2.0))),
         ("reject", num(REJECT)),
     ];
+    let tests = [("exact", p.exact), ("gaussian", p.gaussian), ("halves", p.halves)];
+    for ((name, a), z) in tests.into_iter().zip(["z_exact", "z_gaussian", "z_halves"]) {
+        values.extend([(name, verdict(&a).into()), (z, a.map_or("–".into(), |a| num(a.z)))]);
+    }
     let finding = fill(named(FINDINGS, verdict(&p.exact)), &values);
-    let text = fill(
-        DIMPLE_PARTICLE,
-        &[
-            ("label", label.to_string()),
-            ("mass", num(p.mass)),
-            ("exact", verdict(&p.exact).into()),
-            ("z_exact", z(&p.exact)),
-            ("gaussian", verdict(&p.gaussian).into()),
-            ("z_gaussian", z(&p.gaussian)),
-            ("halves", verdict(&p.halves).into()),
-            ("z_halves", z(&p.halves)),
-            ("dof", num(e.dof)),
-            ("power", num(0.5 * (e.dof - 3.0))),
-            ("kurtosis", num(-6.0 / (e.dof + 2.0))),
-            ("finding", finding),
-            ("reject", num(REJECT)),
-        ],
-    );
-    text + "\n"
+    values.push(("finding", finding));
+    fill(DIMPLE_PARTICLE, &values) + "\n"
 }
 
 /// What the dimple table says: the shortest runs against the longest of
@@ -501,24 +453,9 @@ fn dimple_answer(all: &[Dimples]) -> String {
         let name = if noise { "noise" } else { "beyond_noise" };
         fill(named(FINDINGS, name), &values)
     });
-    fill(
-        DIMPLE_ANSWER,
-        &[
-            ("few_samples", num(few.samples)),
-            ("few_label", few.label.clone()),
-            ("few_seen", few.seen.to_string()),
-            ("few_runs", few.runs.to_string()),
-            ("few_independent", num(few.independent)),
-            ("few_chance_independent", opt(few.chance_independent)),
-            ("few_chance", opt(few.chance)),
-            ("many_samples", num(many.samples)),
-            ("many_label", many.label.clone()),
-            ("many_independent", num(many.independent)),
-            ("many_seen", many.seen.to_string()),
-            ("many_runs", many.runs.to_string()),
-            ("verdict", verdict),
-        ],
-    )
+    let few = fill(named(DIMPLE_ANSWER, "few"), &few.values());
+    let many = fill(named(DIMPLE_ANSWER, "many"), &many.values());
+    format!("\n{few} {many} {verdict}\n")
 }
 
 #[cfg(test)]
@@ -554,6 +491,7 @@ mod tests {
             fill(DIMPLE_HEAD, &[("trials", "1000".into())]),
             dimple_text("a", &p, &e),
             dimple_answer(&[d(400.0), d(20000.0)]),
+            fill(named(DIMPLE_ANSWER, "row"), &d(400.0).values()),
             ROD_HEAD.into(),
             FLUID_HEAD.into(),
             SETTLING_HEAD.into(),
