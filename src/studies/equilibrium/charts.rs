@@ -2,7 +2,7 @@
 //! with ±1 standard error bars) beside the laws drawn as curves. The
 //! section titles each.
 
-use super::ensemble::Ensemble;
+use super::ensemble::{Ball, Ensemble};
 use super::measure::{histogram, profile, radial_distribution};
 use super::moments;
 use crate::model::chart::{ChartSpec, Layer, colour};
@@ -77,20 +77,20 @@ fn range(p: &Pooled) -> (f64, f64) {
     (first - 0.5 * w, last + 0.5 * w)
 }
 
-/// v_x of one particle per replica (`index(r)`, its engine index), in
-/// units of its exact law's std about its centre: the exact law (f
+/// v_x of one particle per replica (the one `pick` picks of its balls),
+/// in units of its exact law's std about its centre: the exact law (f
 /// degrees of freedom) beside the unit Gaussian. `suffixes` pick the
 /// histograms ("" for the whole run, "_early"/"_late" for halves).
 pub fn velocity(
     runs: &Runs,
-    index: &dyn Fn(usize) -> Option<(usize, f64)>,
+    pick: &dyn Fn(&Ensemble) -> Option<Ball>,
     suffixes: &[(&str, &str)],
 ) -> Option<ChartSpec> {
     let dof = runs.first()?.0.dof;
     let mut layers = Vec::new();
     let mut span = (0.0, 0.0);
     for (k, (suffix, label)) in suffixes.iter().enumerate() {
-        let ball = |r| index(r).unwrap_or((usize::MAX, f64::NAN));
+        let ball = |r: usize| pick(runs[r].0).map_or((usize::MAX, f64::NAN), |b| (b.index, b.mass));
         let name = |r| format!("velocity_x{suffix}.{}", ball(r).0);
         let law = |r: usize| runs[r].0.velocity_law(ball(r).1);
         let p = pooled(runs, &name, &|r| (law(r).centre, law(r).std()))?;

@@ -128,8 +128,17 @@ impl Ensemble {
 
     /// Balls from left to right at the start (rods keep this order).
     pub fn by_rank(&self) -> Vec<Ball> {
+        self.sorted(|b| b.x)
+    }
+
+    /// Balls from the lightest to the heaviest (equal masses in index order).
+    pub fn by_mass(&self) -> Vec<Ball> {
+        self.sorted(|b| b.mass)
+    }
+
+    fn sorted(&self, key: fn(&Ball) -> f64) -> Vec<Ball> {
         let mut v = self.balls.clone();
-        v.sort_by(|a, b| a.x.total_cmp(&b.x));
+        v.sort_by(|a, b| key(a).total_cmp(&key(b)));
         v
     }
 
@@ -147,20 +156,6 @@ impl Ensemble {
     /// The ball with engine index `index`.
     pub fn ball(&self, index: usize) -> Option<Ball> {
         self.balls.iter().copied().find(|b| b.index == index)
-    }
-
-    pub fn lightest(&self) -> Option<Ball> {
-        self.balls
-            .iter()
-            .copied()
-            .min_by(|a, b| a.mass.total_cmp(&b.mass))
-    }
-
-    pub fn heaviest(&self) -> Option<Ball> {
-        self.balls
-            .iter()
-            .copied()
-            .max_by(|a, b| a.mass.total_cmp(&b.mass))
     }
 
     /// Packing fraction (every ball's volume over the box's).

@@ -17,7 +17,8 @@ pub fn histogram<'a>(out: &'a RunOutput, name: &str) -> Option<&'a Histogram> {
 pub fn measure(e: &Ensemble, ctx: &Context, out: &mut RunOutput) {
     let mut add = Vec::new();
     add.push(("kT", e.kt()));
-    if let (Some(light), Some(heavy)) = (e.lightest(), e.heaviest()) {
+    let by_mass = e.by_mass();
+    if let (Some(light), Some(heavy)) = (by_mass.first(), by_mass.last()) {
         let fit = |i: usize| histogram(out, &format!("velocity_x.{i}")).map(moments::of);
         if let (Some(l), Some(h)) = (fit(light.index), fit(heavy.index)) {
             let exact = e.velocity_law(light.mass).std() / e.velocity_law(heavy.mass).std();

@@ -39,8 +39,12 @@ const FLUID_HEAD: &str = include_str!("fluid.md");
 const SETTLING_HEAD: &str = include_str!("settling.md");
 const METHODS: &str = include_str!("methods.md");
 const CAPTIONS: &str = include_str!("captions.md");
+const TITLES: &str = include_str!("titles.md");
 /// The sentences a finding is told in, one per outcome.
 const FINDINGS: &str = include_str!("findings.md");
+
+/// A placeholder and what fills it.
+type Value = (&'static str, String);
 
 /// A group of runs (a case, or a sweep point), each beside its ensemble.
 struct Group<'a> {
@@ -166,30 +170,25 @@ impl Parts {
         md + METHODS
     }
 
-    /// A group's figure, if its chart could be drawn, titled "label: what",
-    /// with its caption.
-    fn figure(&mut self, g: &Group, name: &str, what: &str, chart: Option<ChartSpec>) {
-        self.figure_with(g, name, what, chart, ("", String::new()));
+    /// A group's figure, if its chart could be drawn, with its title and
+    /// caption.
+    fn figure(&mut self, g: &Group, name: &str, chart: Option<ChartSpec>) {
+        self.figure_with(g, name, chart, ("", String::new()));
     }
 
     /// The same with one more value for the caption.
-    fn figure_with(
-        &mut self,
-        g: &Group,
-        name: &str,
-        what: &str,
-        chart: Option<ChartSpec>,
-        extra: (&str, String),
-    ) {
+    fn figure_with(&mut self, g: &Group, name: &str, chart: Option<ChartSpec>, extra: Value) {
         let Some(mut chart) = chart else { return };
-        chart.title = format!("{}: {what}", g.label);
-        let file = format!("equilibrium_{}_{name}.svg", g.slug);
+        let (e, file) = (g.view[0].0, format!("equilibrium_{}_{name}.svg", g.slug));
         let values = [
             ("label", g.label.clone()),
             ("replicas", g.view.len().to_string()),
-            ("dimension", g.view[0].0.dimension.to_string()),
+            ("dimension", e.dimension.to_string()),
+            ("n", e.balls.len().to_string()),
+            ("last", e.balls.len().saturating_sub(1).to_string()),
             extra,
         ];
+        chart.title = fill(named(TITLES, name), &values);
         let caption = fill(named(CAPTIONS, name), &values);
         self.pictures += &show(&mut self.figures, Figure { file, chart }, &caption);
     }
@@ -197,16 +196,13 @@ impl Parts {
     fn rods(&mut self, g: &Group, t: &Tests) {
         self.rod_rows(g, t);
         let view = &g.view[..];
-        let light = |r: usize| view[r].0.lightest().map(|b| (b.index, b.mass));
-        let heavy = |r: usize| view[r].0.heaviest().map(|b| (b.index, b.mass));
         let whole = [("", charts::MEASURED)];
-        let chart = charts::velocity(view, &light, &whole);
-        self.figure(g, "light", "lightest particle's vₓ", chart);
-        let chart = charts::velocity(view, &heavy, &whole);
-        self.figure(g, "heavy", "heaviest particle's vₓ", chart);
-        let chart = charts::std_against_mass(view);
-        self.figure(g, "std", "velocity std against mass", chart);
-        self.figure(g, "positions", "each rod's position", charts::positions(view));
+        let chart = charts::velocity(view, &|e| e.by_mass().first().copied(), &whole);
+        self.figure(g, "light", chart);
+        let chart = charts::velocity(view, &|e| e.by_mass().last().copied(), &whole);
+        self.figure(g, "heavy", chart);
+        self.figure(g, "std", charts::std_against_mass(view));
+        self.figure(g, "positions", charts::positions(view));
         let ranked = view[0].0.by_rank();
         let name = |kind: &str, rank: usize| format!("{kind}.{}", ranked[rank].index);
         let last = ranked.len() - 1;
@@ -218,23 +214,19 @@ impl Parts {
                 format!("x{last}, x{}", last + 1),
             ),
         ];
-        let what = format!("positions of particles 1 and 2, {last} and {}", last + 1);
         let axes = ("x of the left one [σ]", "x of the right one [σ]");
-        self.figure(g, "scatter_x", &what, charts::scatter(view, &sets, axes));
+        self.figure(g, "scatter_x", charts::scatter(view, &sets, axes));
         let sets = [(name("v", 0), name("v", 1), "(v₁, v₂)".into())];
-        let chart = charts::scatter(view, &sets, ("v₁", "v₂"));
-        self.figure(g, "scatter_v", "v₁ against v₂", chart);
+        self.figure(g, "scatter_v", charts::scatter(view, &sets, ("v₁", "v₂")));
         let sets = [(name("x", 0), name("v", 0), "(x₁, v₁)".into())];
         let chart = charts::scatter(view, &sets, ("x₁ [σ]", "v₁"));
-        self.figure(g, "scatter_xv", "x₁ against v₁", chart);
+        self.figure(g, "scatter_xv", chart);
         self.dimples(g, t);
         let Some(p) = (t.particles.iter()).find(|p| p.rank == 0 && p.halves.is_some()) else {
             return;
         };
-        let first = |r: usize| view[r].0.ball(p.index).map(|b| (b.index, b.mass));
         let halves = [("_early", "first half"), ("_late", "second half")];
-        let chart = charts::velocity(view, &first, &halves);
-        self.figure(g, "dimple", "P(v₁), first and second halves", chart);
+        self.figure(g, "dimple", charts::velocity(view, &|e| e.ball(p.index), &halves));
         self.dimple += &dimple_text(&g.label, p, view[0].0);
     }
 
@@ -342,13 +334,12 @@ impl Parts {
         self.settling += &table_row(&row);
         let reference = Some((reference, "Maxwell-Boltzmann: √((2 − π/2) kT/m) in 2D"));
         let chart = charts::settling(&time, &mean, "std of the speeds", reference);
-        self.figure(g, "speed_std", "std of the speeds", Some(chart));
+        self.figure(g, "speed_std", Some(chart));
         let (time, energy) = g.runs.mean_curve("kinetic_energy");
         if let Some(start) = energy.first().map(|s| s.mean) {
             let drift = (energy.iter()).fold(0.0, |d, s| f64::max(d, (s.mean - start).abs()));
             let chart = charts::settling(&time, &energy, "total kinetic energy", None);
-            let drift = ("drift", num(drift / start));
-            self.figure_with(g, "energy", "total energy", Some(chart), drift);
+            self.figure_with(g, "energy", Some(chart), ("drift", num(drift / start)));
         }
         true
     }
@@ -373,10 +364,10 @@ impl Parts {
         row.push(format!("{} s", num(g.runs.cpu())));
         self.fluid += &table_row(&row);
         let view = &g.view[..];
-        self.figure(g, "vx", "vₓ", charts::scaled_vx(view));
-        self.figure(g, "speed", "speeds", charts::speed(view));
-        self.figure(g, "density", "density along x", charts::density(view));
-        self.figure(g, "g", "g(r)", charts::radial(view, 4.0));
+        self.figure(g, "vx", charts::scaled_vx(view));
+        self.figure(g, "speed", charts::speed(view));
+        self.figure(g, "density", charts::density(view));
+        self.figure(g, "g", charts::radial(view, 4.0));
     }
 }
 
@@ -394,7 +385,7 @@ struct Dimples {
 
 impl Dimples {
     /// What its table row and the conclusion's sentences are filled with.
-    fn values(&self) -> [(&'static str, String); 7] {
+    fn values(&self) -> [Value; 7] {
         [
             ("label", self.label.clone()),
             ("samples", num(self.samples)),
@@ -500,10 +491,13 @@ mod tests {
         for text in &texts {
             assert!(unfilled(text).is_empty(), "{text}");
         }
-        let values = ["label", "replicas", "dimension", "drift"].map(|k| (k, "x".to_string()));
-        for name in names(CAPTIONS) {
-            let text = fill(named(CAPTIONS, name), &values);
-            assert!(unfilled(&text).is_empty(), "{text}");
+        let values = ["label", "replicas", "dimension", "n", "last", "drift"];
+        let values = values.map(|k| (k, "x".to_string()));
+        for texts in [CAPTIONS, TITLES] {
+            for name in names(texts) {
+                let text = fill(named(texts, name), &values);
+                assert!(unfilled(&text).is_empty(), "{text}");
+            }
         }
         let values = ["label", "min", "n", "limit", "reject", "how"].map(|k| (k, "x".to_string()));
         for name in names(FINDINGS) {
