@@ -15,8 +15,7 @@ pub fn histogram<'a>(out: &'a RunOutput, name: &str) -> Option<&'a Histogram> {
 }
 
 pub fn measure(e: &Ensemble, ctx: &Context, out: &mut RunOutput) {
-    let mut add = Vec::new();
-    add.push(("kT", e.kt()));
+    let mut add = vec![("kT", e.kt())];
     let by_mass = e.by_mass();
     if let (Some(light), Some(heavy)) = (by_mass.first(), by_mass.last()) {
         let fit = |i: usize| histogram(out, &format!("velocity_x.{i}")).map(moments::of);
@@ -71,20 +70,14 @@ pub fn measure(e: &Ensemble, ctx: &Context, out: &mut RunOutput) {
 
 /// Z = 1 + c phi g(sigma): c = 2 for disks, 4 for spheres, 1 for rods.
 pub fn contact_factor(dimension: usize) -> f64 {
-    match dimension {
-        1 => 1.0,
-        2 => 2.0,
-        _ => 4.0,
-    }
+    [1.0, 2.0, 4.0][dimension.clamp(1, 3) - 1]
 }
 
 /// Volume of the shell between radii a and b in d dimensions.
 pub fn shell(dimension: usize, a: f64, b: f64) -> f64 {
-    match dimension {
-        1 => 2.0 * (b - a),
-        2 => std::f64::consts::PI * (b * b - a * a),
-        _ => 4.0 / 3.0 * std::f64::consts::PI * (b.powi(3) - a.powi(3)),
-    }
+    let d = dimension.clamp(1, 3);
+    [2.0, std::f64::consts::PI, 4.0 / 3.0 * std::f64::consts::PI][d - 1]
+        * (b.powi(d as i32) - a.powi(d as i32))
 }
 
 /// g(r) at each bin: mean pairs per sample over an ideal gas's N(N-1)/2
@@ -134,15 +127,15 @@ pub fn wall_density(e: &Ensemble, h: &Histogram) -> Option<f64> {
     let density = profile(e, h);
     let length = e.size[0];
     let end = |high: bool| {
+        // Distances beyond contact; bins straddling contact are part
+        // empty: start beyond them.
         let mut points: Vec<(f64, f64)> = (h.lo.iter().zip(&h.hi).zip(&density))
             .map(|((a, b), n)| (0.5 * (a + b), *n))
-            .map(|(x, n)| (if high { length - x } else { x }, n))
-            .filter(|(x, _)| *x >= r)
-            .map(|(x, n)| (x - r, n))
+            .map(|(x, n)| ((if high { length - x } else { x }) - r, n))
+            .filter(|(x, _)| *x >= 0.5 * (h.hi[0] - h.lo[0]))
             .collect();
         points.sort_by(|a, b| a.0.total_cmp(&b.0));
-        // Bins straddling contact are part empty: start beyond them.
-        at_contact((points.into_iter()).filter(|(x, _)| *x >= 0.5 * (h.hi[0] - h.lo[0])))
+        at_contact(points.into_iter())
     };
     Some(0.5 * (end(false)? + end(true)?))
 }

@@ -459,12 +459,8 @@ mod tests {
     #[test]
     fn every_placeholder_is_filled() {
         let p = Particle {
-            index: 0,
-            rank: 0,
             mass: 1.0,
-            exact: None,
-            gaussian: None,
-            halves: None,
+            ..Default::default()
         };
         let e = Ensemble::default();
         let d = |samples| Dimples {
