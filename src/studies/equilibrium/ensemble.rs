@@ -49,6 +49,7 @@ impl Ensemble {
             .collect();
         let anchored = b.particles.iter().any(|p| p.is_immovable() || p.is_plane());
         let all = b.particles.iter().filter(|p| !p.is_immovable());
+        let periodic: Vec<bool> = (0..D).map(|k| b.sim_box.axes[k].is_periodic()).collect();
         Ensemble {
             dimension: D,
             energy: b.particles.iter().map(Particle::kinetic_energy).sum(),
@@ -56,10 +57,8 @@ impl Ensemble {
             momentum: (0..D)
                 .map(|k| all.clone().map(|p| p.mass() * p.vel[k]).sum())
                 .collect(),
-            conserved: (0..D)
-                .map(|k| !anchored && b.sim_box.axes[k].is_periodic())
-                .collect(),
-            periodic: (0..D).map(|k| b.sim_box.axes[k].is_periodic()).collect(),
+            conserved: periodic.iter().map(|p| !anchored && *p).collect(),
+            periodic,
             dof: degrees_of_freedom(&b.particles, &b.sim_box),
             size: b.sim_box.size.to_vec(),
             volume: b.sim_box.volume(),
@@ -99,16 +98,11 @@ impl Ensemble {
 
     /// The exact law of v_x of a ball of mass m.
     pub fn velocity_law(&self, mass: f64) -> VelocityMarginal {
+        let (energy, dof) = (self.internal_energy(), self.dof);
         if self.conserved[0] {
-            VelocityMarginal::conserved(
-                mass,
-                self.total_mass,
-                self.momentum[0],
-                self.internal_energy(),
-                self.dof,
-            )
+            VelocityMarginal::conserved(mass, self.total_mass, self.momentum[0], energy, dof)
         } else {
-            VelocityMarginal::free(mass, self.internal_energy(), self.dof)
+            VelocityMarginal::free(mass, energy, dof)
         }
     }
 

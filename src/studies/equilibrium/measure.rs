@@ -4,7 +4,7 @@
 //! a wall beside the wall pressure. Each group is written when the run
 //! observed what it needs, as NaN where the scene does not allow it.
 
-use super::ensemble::Ensemble;
+use super::ensemble::{Ball, Ensemble};
 use super::moments;
 use crate::model::run_output::{Histogram, RunOutput};
 use crate::observe::Context;
@@ -16,25 +16,27 @@ pub fn histogram<'a>(out: &'a RunOutput, name: &str) -> Option<&'a Histogram> {
 
 pub fn measure(e: &Ensemble, ctx: &Context, out: &mut RunOutput) {
     let mut add = vec![("kT", e.kt())];
+    // The lightest and the heaviest ball, each with its Gaussian fit.
+    let fit = |b: Option<&Ball>| {
+        let b = *b?;
+        Some((b, moments::of(histogram(out, &format!("velocity_x.{}", b.index))?)))
+    };
     let by_mass = e.by_mass();
-    if let (Some(light), Some(heavy)) = (by_mass.first(), by_mass.last()) {
-        let fit = |i: usize| histogram(out, &format!("velocity_x.{i}")).map(moments::of);
-        if let (Some(l), Some(h)) = (fit(light.index), fit(heavy.index)) {
-            let exact = e.velocity_law(light.mass).std() / e.velocity_law(heavy.mass).std();
-            let ratio = l.std / h.std;
-            add.extend([
-                ("lightest_mass", light.mass),
-                ("heaviest_mass", heavy.mass),
-                ("std_lightest", l.std),
-                ("std_heaviest", h.std),
-                ("std_ratio", ratio),
-                ("sqrt_mass_ratio", (heavy.mass / light.mass).sqrt()),
-                ("std_ratio_exact", exact),
-                ("std_ratio_over_exact", ratio / exact),
-                ("kurtosis_lightest", l.excess_kurtosis),
-                ("kurtosis_heaviest", h.excess_kurtosis),
-            ]);
-        }
+    if let (Some((light, l)), Some((heavy, h))) = (fit(by_mass.first()), fit(by_mass.last())) {
+        let exact = e.velocity_law(light.mass).std() / e.velocity_law(heavy.mass).std();
+        let ratio = l.std / h.std;
+        add.extend([
+            ("lightest_mass", light.mass),
+            ("heaviest_mass", heavy.mass),
+            ("std_lightest", l.std),
+            ("std_heaviest", h.std),
+            ("std_ratio", ratio),
+            ("sqrt_mass_ratio", (heavy.mass / light.mass).sqrt()),
+            ("std_ratio_exact", exact),
+            ("std_ratio_over_exact", ratio / exact),
+            ("kurtosis_lightest", l.excess_kurtosis),
+            ("kurtosis_heaviest", h.excess_kurtosis),
+        ]);
     }
     if let Some(h) = histogram(out, "scaled_velocity_x") {
         add.push(("kurtosis_vx", moments::of(h).excess_kurtosis));
@@ -85,11 +87,13 @@ pub fn shell(dimension: usize, a: f64, b: f64) -> f64 {
 pub fn radial_distribution(e: &Ensemble, h: &Histogram) -> Vec<f64> {
     let n = e.balls.len() as f64;
     let pairs = 0.5 * n * (n - 1.0);
-    h.lo.iter()
-        .zip(&h.hi)
-        .zip(&h.count)
-        .map(|((a, b), c)| c / (pairs * shell(e.dimension, *a, *b) / e.volume))
-        .collect()
+    per_bin(h, |a, b| pairs * shell(e.dimension, a, b) / e.volume)
+}
+
+/// Each bin's count over `norm(lo, hi)`.
+fn per_bin(h: &Histogram, norm: impl Fn(f64, f64) -> f64) -> Vec<f64> {
+    let bins = h.lo.iter().zip(&h.hi).zip(&h.count);
+    bins.map(|((a, b), c)| c / norm(*a, *b)).collect()
 }
 
 /// Bins a contact value is extrapolated from: 0.16 sigma.
@@ -145,9 +149,5 @@ pub fn profile(e: &Ensemble, h: &Histogram) -> Vec<f64> {
     let n = e.balls.len() as f64;
     let samples = h.count.iter().sum::<f64>() / n;
     let cross = e.volume / e.size[0];
-    h.lo.iter()
-        .zip(&h.hi)
-        .zip(&h.count)
-        .map(|((a, b), c)| c / (samples * (b - a) * cross))
-        .collect()
+    per_bin(h, |a, b| samples * (b - a) * cross)
 }

@@ -140,13 +140,13 @@ struct Parts {
 
 impl Parts {
     fn markdown(&self) -> String {
+        // A table under its head, if it has rows, and what follows it.
+        let table = |head: &str, rows: &str, after: &str| match rows {
+            "" => String::new(),
+            _ => format!("{head}{rows}\n{after}"),
+        };
         let mut md = fill(INTRO, &[("reject", num(REJECT))]);
-        if !self.rods.is_empty() {
-            md += ROD_HEAD;
-            md += &self.rods;
-            md.push('\n');
-            md += &self.per_particle;
-        }
+        md += &table(ROD_HEAD, &self.rods, &self.per_particle);
         if !self.dimple.is_empty() || !self.dimples.is_empty() {
             md += "### The dimple in P(v₁)\n\n";
             md += &self.dimple;
@@ -158,16 +158,9 @@ impl Parts {
             md += &dimple_answer(&self.dimples);
             md.push('\n');
         }
-        for (head, rows) in [(FLUID_HEAD, &self.fluid), (SETTLING_HEAD, &self.settling)] {
-            if !rows.is_empty() {
-                md += head;
-                md += rows;
-                md.push('\n');
-            }
-        }
-        md += "### Figures\n\n";
-        md += &self.pictures;
-        md + METHODS
+        md += &table(FLUID_HEAD, &self.fluid, "");
+        md += &table(SETTLING_HEAD, &self.settling, "");
+        md + "### Figures\n\n" + &self.pictures + METHODS
     }
 
     /// A group's figure, if its chart could be drawn, with its title and
@@ -372,6 +365,7 @@ impl Parts {
 }
 
 /// One line of the dimple table, kept for the conclusion.
+#[derive(Default)]
 struct Dimples {
     label: String,
     particles: usize,
@@ -464,14 +458,10 @@ mod tests {
         };
         let e = Ensemble::default();
         let d = |samples| Dimples {
-            label: "a".into(),
-            particles: 10,
             samples,
-            seen: 1,
-            runs: 8,
-            independent: 30.0,
             chance: Some(0.1),
             chance_independent: Some(0.2),
+            ..Default::default()
         };
         let texts = [
             fill(INTRO, &[("reject", "4".into())]),
