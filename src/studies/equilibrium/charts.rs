@@ -14,6 +14,10 @@ use crate::theory::maxwell::{MaxwellSpeed, normal_pdf};
 use crate::theory::microcanonical::VelocityMarginal;
 
 pub type Runs<'a> = [(&'a Ensemble, &'a RunOutput)];
+/// Replica `r`'s histogram's name.
+pub type Name<'a> = &'a dyn Fn(usize) -> String;
+/// Which of a replica's balls a chart is of.
+pub type Pick<'a> = &'a dyn Fn(&Ensemble) -> Option<Ball>;
 
 /// The label of a pooled histogram's markers.
 pub const MEASURED: &str = "measured (mean ± standard error over replicas)";
@@ -26,11 +30,7 @@ const DENSITY: &str = "probability density";
 /// 0's), the mean density and its standard error.
 type Pooled = Vec<(f64, Stats)>;
 
-fn pooled(
-    runs: &Runs,
-    name: &dyn Fn(usize) -> String,
-    scale: &dyn Fn(usize) -> (f64, f64),
-) -> Option<Pooled> {
+fn pooled(runs: &Runs, name: Name, scale: &dyn Fn(usize) -> (f64, f64)) -> Option<Pooled> {
     let mut per: Vec<Vec<f64>> = Vec::new();
     let mut x = Vec::new();
     for (r, (_, out)) in runs.iter().enumerate() {
@@ -81,11 +81,7 @@ fn range(p: &Pooled) -> (f64, f64) {
 /// in units of its exact law's std about its centre: the exact law (f
 /// degrees of freedom) beside the unit Gaussian. `suffixes` pick the
 /// histograms ("" for the whole run, "_early"/"_late" for halves).
-pub fn velocity(
-    runs: &Runs,
-    pick: &dyn Fn(&Ensemble) -> Option<Ball>,
-    suffixes: &[(&str, &str)],
-) -> Option<ChartSpec> {
+pub fn velocity(runs: &Runs, pick: Pick, suffixes: &[(&str, &str)]) -> Option<ChartSpec> {
     let dof = runs.first()?.0.dof;
     let mut layers = Vec::new();
     let mut span = (0.0, 0.0);

@@ -102,8 +102,7 @@ impl Study for Equilibrium {
             // The excess kurtosis of a component of a uniform point on a
             // sphere in f dimensions (docs/equilibrium.md).
             "kurtosis_lightest" | "kurtosis_heaviest" | "kurtosis_vx" => {
-                let e = Ensemble::of_seed(&d.scene, 0)?;
-                Some(-6.0 / (e.dof + 2.0))
+                Ensemble::of_seed(&d.scene, 0).map(|e| -6.0 / (e.dof + 2.0))
             }
             _ => None,
         }

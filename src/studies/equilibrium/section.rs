@@ -155,7 +155,7 @@ impl Parts {
                 md += &fill(named(DIMPLE_ANSWER, "row"), &d.values());
                 md.push('\n');
             }
-            md += &dimple_answer(&self.dimples);
+            md += &dimple_answer(&self.dimples).unwrap_or_default();
             md.push('\n');
         }
         md += &table(FLUID_HEAD, &self.fluid, "");
@@ -196,22 +196,19 @@ impl Parts {
         self.figure(g, "heavy", chart);
         self.figure(g, "std", charts::std_against_mass(view));
         self.figure(g, "positions", charts::positions(view));
-        let ranked = view[0].0.by_rank();
-        let name = |kind: &str, rank: usize| format!("{kind}.{}", ranked[rank].index);
+        let ranked: Vec<usize> = view[0].0.by_rank().iter().map(|b| b.index).collect();
+        let x = |rank: usize| format!("x.{}", ranked[rank]);
+        let v = |rank: usize| format!("v.{}", ranked[rank]);
         let last = ranked.len() - 1;
         let sets = [
-            (name("x", 0), name("x", 1), "x₁, x₂".into()),
-            (
-                name("x", last - 1),
-                name("x", last),
-                format!("x{last}, x{}", last + 1),
-            ),
+            (x(0), x(1), "x₁, x₂".into()),
+            (x(last - 1), x(last), format!("x{last}, x{}", last + 1)),
         ];
         let axes = ("x of the left one [σ]", "x of the right one [σ]");
         self.figure(g, "scatter_x", charts::scatter(view, &sets, axes));
-        let sets = [(name("v", 0), name("v", 1), "(v₁, v₂)".into())];
+        let sets = [(v(0), v(1), "(v₁, v₂)".into())];
         self.figure(g, "scatter_v", charts::scatter(view, &sets, ("v₁", "v₂")));
-        let sets = [(name("x", 0), name("v", 0), "(x₁, v₁)".into())];
+        let sets = [(x(0), v(0), "(x₁, v₁)".into())];
         let chart = charts::scatter(view, &sets, ("x₁ [σ]", "v₁"));
         self.figure(g, "scatter_xv", chart);
         self.dimples(g, t);
@@ -418,16 +415,12 @@ fn dimple_text(label: &str, p: &Particle, e: &Ensemble) -> String {
 /// What the dimple table says: the shortest runs against the longest of
 /// as many particles (the first such, in table order), and whether the
 /// shortest show dimples as often as that few independent samples would.
-fn dimple_answer(all: &[Dimples]) -> String {
-    let Some(few) = all.iter().min_by(|a, b| a.samples.total_cmp(&b.samples)) else {
-        return String::new();
-    };
+fn dimple_answer(all: &[Dimples]) -> Option<String> {
+    let few = all.iter().min_by(|a, b| a.samples.total_cmp(&b.samples))?;
     let same = all.iter().filter(|d| d.particles == few.particles);
-    let Some(many) = same.rev().max_by(|a, b| a.samples.total_cmp(&b.samples)) else {
-        return String::new();
-    };
+    let many = same.rev().max_by(|a, b| a.samples.total_cmp(&b.samples))?;
     if few.samples == many.samples {
-        return String::new();
+        return None;
     }
     let verdict = few.chance_independent.map_or(String::new(), |p| {
         let expected = p * few.runs as f64;
@@ -440,7 +433,7 @@ fn dimple_answer(all: &[Dimples]) -> String {
     });
     let few = fill(named(DIMPLE_ANSWER, "few"), &few.values());
     let many = fill(named(DIMPLE_ANSWER, "many"), &many.values());
-    format!("\n{few} {many} {verdict}\n")
+    Some(format!("\n{few} {many} {verdict}\n"))
 }
 
 #[cfg(test)]
@@ -467,7 +460,7 @@ mod tests {
             fill(INTRO, &[("reject", "4".into())]),
             fill(DIMPLE_HEAD, &[("trials", "1000".into())]),
             dimple_text("a", &p, &e),
-            dimple_answer(&[d(400.0), d(20000.0)]),
+            dimple_answer(&[d(400.0), d(20000.0)]).expect("two lengths"),
             fill(named(DIMPLE_ANSWER, "row"), &d(400.0).values()),
             ROD_HEAD.into(),
             FLUID_HEAD.into(),

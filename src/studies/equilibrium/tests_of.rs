@@ -4,7 +4,7 @@
 //! its own law (masses are drawn per run); bin errors come from the
 //! replicas' spread (`stats::replicas`).
 
-use super::charts::Runs;
+use super::charts::{Name, Runs};
 use super::ensemble::Ensemble;
 use super::measure::histogram as find;
 use crate::model::run_output::RunOutput;
@@ -44,9 +44,7 @@ pub struct Tests {
     pub speed_mb: Option<Agreement>,
 }
 
-/// Replica `r`'s histogram's name, and the probability the law gives its
-/// bin [lo, hi].
-type Name<'a> = &'a dyn Fn(usize) -> String;
+/// The probability replica `r`'s law gives the bin [lo, hi].
 type Law<'a> = &'a dyn Fn(usize, f64, f64) -> f64;
 
 /// Deviations of each replica's histogram `name(r)` from the law's
