@@ -218,14 +218,10 @@ fn mean_over(
     let hists: Vec<&Histogram> = runs.iter().filter_map(|(_, o)| histogram(o, name)).collect();
     let first = hists.first()?;
     let per: Vec<Vec<f64>> = hists.iter().map(|h| per(h)).collect();
-    let points = (0..first.lo.len())
-        .map(|b| {
-            let x = 0.5 * (first.lo[b] + first.hi[b]);
-            (x, per.iter().map(|p| p[b]).sum::<f64>() / per.len() as f64)
-        })
-        .take_while(|(x, _)| *x <= reach)
-        .collect();
-    Some((points, per.len()))
+    let mean = |b: usize| per.iter().map(|p| p[b]).sum::<f64>() / per.len() as f64;
+    let centres = first.lo.iter().zip(&first.hi).map(|(a, b)| 0.5 * (a + b));
+    let points = centres.enumerate().map(|(b, x)| (x, mean(b)));
+    Some((points.take_while(|(x, _)| *x <= reach).collect(), per.len()))
 }
 
 /// A chart with linear axes (the section gives it its title).

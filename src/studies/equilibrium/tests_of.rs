@@ -56,9 +56,8 @@ fn deviations(runs: &Runs, name: Name, law: Law) -> Option<(Vec<Vec<f64>>, Vec<b
     for (r, (_, out)) in runs.iter().enumerate() {
         let h = find(out, &name(r))?;
         let total: f64 = h.count.iter().sum();
-        let p: Vec<f64> = (h.lo.iter().zip(&h.hi))
-            .map(|(a, b)| law(r, *a, *b))
-            .collect();
+        let bins = h.lo.iter().zip(&h.hi);
+        let p: Vec<f64> = bins.map(|(a, b)| law(r, *a, *b)).collect();
         if expected.is_empty() {
             expected = vec![0.0; p.len()];
         }
@@ -149,10 +148,8 @@ fn particle(runs: &Runs, rank: usize, i: usize) -> Option<Particle> {
 
 /// Every rank's position histogram against its law, in one test.
 fn positions(runs: &Runs) -> Option<Agreement> {
-    let laws: Vec<_> = runs
-        .iter()
-        .map(|(e, _)| e.rod_laws())
-        .collect::<Option<_>>()?;
+    let laws: Option<Vec<_>> = runs.iter().map(|(e, _)| e.rod_laws()).collect();
+    let laws = laws?;
     let mut rows: Vec<Vec<f64>> = vec![Vec::new(); runs.len()];
     let mut keep = Vec::new();
     for k in 0..laws.first()?.len() {
