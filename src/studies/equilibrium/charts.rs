@@ -233,14 +233,12 @@ fn linear(x_label: &str, y_label: &str, layers: Vec<Layer>) -> ChartSpec {
 /// (x series, y series, label) a set of markers.
 pub fn scatter(runs: &Runs, sets: &[(String, String, String)], axes: (&str, &str)) -> Option<ChartSpec> {
     let out = runs.first()?.1;
-    let mut layers = Vec::new();
-    for (k, (x, y, label)) in sets.iter().enumerate() {
+    let layers = sets.iter().enumerate().map(|(k, (x, y, label))| {
         let (x, y) = (out.series(x)?, out.series(y)?);
         let points = x.value.iter().copied().zip(y.value.iter().copied());
-        let paint = colour(k).faded(0.5);
-        layers.push(markers(points.collect(), paint, Some(label.clone())));
-    }
-    Some(linear(axes.0, axes.1, layers))
+        Some(markers(points.collect(), colour(k).faded(0.5), Some(label.clone())))
+    });
+    Some(linear(axes.0, axes.1, layers.collect::<Option<_>>()?))
 }
 
 /// A series' mean over replicas with a ±1 standard error band, and a

@@ -97,10 +97,8 @@ pub fn section(runs: &AllRuns) -> anyhow::Result<ReportSection> {
     let mut p = Parts::default();
     for point in by_point(runs) {
         let specs = runs.iter().filter(|(s, _)| s.point_id == point.spec.point_id);
-        let Some(ensembles) = specs.map(|(s, _)| Ensemble::of_run(s)).collect::<Option<Vec<_>>>()
-        else {
-            continue;
-        };
+        let ensembles: Option<Vec<_>> = specs.map(|(s, _)| Ensemble::of_run(s)).collect();
+        let Some(ensembles) = ensembles else { continue };
         let (e, case) = (&ensembles[0], &point.spec.case);
         let kind = if case.is_some() { "case" } else { "point" };
         let g = Group {
@@ -164,23 +162,18 @@ impl Parts {
     }
 
     /// A group's figure, if its chart could be drawn, with its title and
-    /// caption.
-    fn figure(&mut self, g: &Group, name: &str, chart: Option<ChartSpec>) {
-        self.figure_with(g, name, chart, ("", String::new()));
-    }
-
-    /// The same with one more value for the caption.
-    fn figure_with(&mut self, g: &Group, name: &str, chart: Option<ChartSpec>, extra: Value) {
+    /// caption (`extra`: values for them beside the group's).
+    fn figure(&mut self, g: &Group, name: &str, chart: Option<ChartSpec>, extra: &[Value]) {
         let Some(mut chart) = chart else { return };
         let (e, file) = (g.view[0].0, format!("equilibrium_{}_{name}.svg", g.slug));
-        let values = [
+        let mut values = vec![
             ("label", g.label.clone()),
             ("replicas", g.view.len().to_string()),
             ("dimension", e.dimension.to_string()),
             ("n", e.balls.len().to_string()),
             ("last", e.balls.len().saturating_sub(1).to_string()),
-            extra,
         ];
+        values.extend_from_slice(extra);
         chart.title = fill(named(TITLES, name), &values);
         let caption = fill(named(CAPTIONS, name), &values);
         self.pictures += &show(&mut self.figures, Figure { file, chart }, &caption);
@@ -191,11 +184,11 @@ impl Parts {
         let view = &g.view[..];
         let whole = [("", charts::MEASURED)];
         let chart = charts::velocity(view, &|e| e.by_mass().first().copied(), &whole);
-        self.figure(g, "light", chart);
+        self.figure(g, "light", chart, &[]);
         let chart = charts::velocity(view, &|e| e.by_mass().last().copied(), &whole);
-        self.figure(g, "heavy", chart);
-        self.figure(g, "std", charts::std_against_mass(view));
-        self.figure(g, "positions", charts::positions(view));
+        self.figure(g, "heavy", chart, &[]);
+        self.figure(g, "std", charts::std_against_mass(view), &[]);
+        self.figure(g, "positions", charts::positions(view), &[]);
         let ranked: Vec<usize> = view[0].0.by_rank().iter().map(|b| b.index).collect();
         let x = |rank: usize| format!("x.{}", ranked[rank]);
         let v = |rank: usize| format!("v.{}", ranked[rank]);
@@ -205,18 +198,17 @@ impl Parts {
             (x(last - 1), x(last), format!("x{last}, x{}", last + 1)),
         ];
         let axes = ("x of the left one [σ]", "x of the right one [σ]");
-        self.figure(g, "scatter_x", charts::scatter(view, &sets, axes));
+        self.figure(g, "scatter_x", charts::scatter(view, &sets, axes), &[]);
         let sets = [(v(0), v(1), "(v₁, v₂)".into())];
-        self.figure(g, "scatter_v", charts::scatter(view, &sets, ("v₁", "v₂")));
+        self.figure(g, "scatter_v", charts::scatter(view, &sets, ("v₁", "v₂")), &[]);
         let sets = [(x(0), v(0), "(x₁, v₁)".into())];
         let chart = charts::scatter(view, &sets, ("x₁ [σ]", "v₁"));
-        self.figure(g, "scatter_xv", chart);
+        self.figure(g, "scatter_xv", chart, &[]);
         self.dimples(g, t);
-        let Some(p) = (t.particles.iter()).find(|p| p.rank == 0 && p.halves.is_some()) else {
-            return;
-        };
+        let first = t.particles.iter().find(|p| p.rank == 0 && p.halves.is_some());
+        let Some(p) = first else { return };
         let halves = [("_early", "first half"), ("_late", "second half")];
-        self.figure(g, "dimple", charts::velocity(view, &|e| e.ball(p.index), &halves));
+        self.figure(g, "dimple", charts::velocity(view, &|e| e.ball(p.index), &halves), &[]);
         self.dimple += &dimple_text(&g.label, p, view[0].0);
     }
 
@@ -268,9 +260,8 @@ impl Parts {
     /// How often particle 1's histogram shows a dimple over the replicas,
     /// and how often independent draws from the exact law would, as many.
     fn dimples(&mut self, g: &Group, t: &Tests) {
-        let Some(p) = t.particles.iter().find(|p| p.rank == 0) else {
-            return;
-        };
+        let first = t.particles.iter().find(|p| p.rank == 0);
+        let Some(p) = first else { return };
         let name = format!("velocity_x.{}", p.index);
         let hists: Vec<&[f64]> = (g.view.iter())
             .filter_map(|(_, o)| histogram(o, &name))
@@ -313,23 +304,19 @@ impl Parts {
         let (level, tau) = settling::equilibration(&time, &mean);
         let duration = time.last().copied().unwrap_or(f64::NAN);
         let collisions = g.runs.collisions() as f64 / n * tau / duration / e.balls.len() as f64;
-        let mut row = vec![
-            g.label.clone(),
-            e.balls.len().to_string(),
-            num(e.packing()),
-            g.view.len().to_string(),
-        ];
+        let mut row = vec![g.label.clone(), e.balls.len().to_string(), num(e.packing())];
+        row.push(g.view.len().to_string());
         row.extend([mean[0].mean, level, reference, tau, collisions].map(num));
         row.push(format!("{} s", num(g.runs.cpu())));
         self.settling += &table_row(&row);
         let reference = Some((reference, "Maxwell-Boltzmann: √((2 − π/2) kT/m) in 2D"));
         let chart = charts::settling(&time, &mean, "std of the speeds", reference);
-        self.figure(g, "speed_std", Some(chart));
+        self.figure(g, "speed_std", Some(chart), &[]);
         let (time, energy) = g.runs.mean_curve("kinetic_energy");
         if let Some(start) = energy.first().map(|s| s.mean) {
             let drift = (energy.iter()).fold(0.0, |d, s| f64::max(d, (s.mean - start).abs()));
             let chart = charts::settling(&time, &energy, "total kinetic energy", None);
-            self.figure_with(g, "energy", Some(chart), ("drift", num(drift / start)));
+            self.figure(g, "energy", Some(chart), &[("drift", num(drift / start))]);
         }
         true
     }
@@ -353,11 +340,10 @@ impl Parts {
         row.extend(["g_contact", "Z_contact", "Z_virial", "contact_theorem_ratio"].map(s));
         row.push(format!("{} s", num(g.runs.cpu())));
         self.fluid += &table_row(&row);
-        let view = &g.view[..];
-        self.figure(g, "vx", charts::scaled_vx(view));
-        self.figure(g, "speed", charts::speed(view));
-        self.figure(g, "density", charts::density(view));
-        self.figure(g, "g", charts::radial(view, 4.0));
+        self.figure(g, "vx", charts::scaled_vx(&g.view), &[]);
+        self.figure(g, "speed", charts::speed(&g.view), &[]);
+        self.figure(g, "density", charts::density(&g.view), &[]);
+        self.figure(g, "g", charts::radial(&g.view, 4.0), &[]);
     }
 }
 
@@ -470,18 +456,14 @@ mod tests {
         for text in &texts {
             assert!(unfilled(text).is_empty(), "{text}");
         }
-        let values = ["label", "replicas", "dimension", "n", "last", "drift"];
-        let values = values.map(|k| (k, "x".to_string()));
-        for texts in [CAPTIONS, TITLES] {
+        let figures = ["label", "replicas", "dimension", "n", "last", "drift"];
+        let findings = ["label", "min", "n", "limit", "reject", "how"];
+        for (texts, keys) in [(CAPTIONS, figures), (TITLES, figures), (FINDINGS, findings)] {
+            let values = keys.map(|k| (k, "x".to_string()));
             for name in names(texts) {
                 let text = fill(named(texts, name), &values);
                 assert!(unfilled(&text).is_empty(), "{text}");
             }
-        }
-        let values = ["label", "min", "n", "limit", "reject", "how"].map(|k| (k, "x".to_string()));
-        for name in names(FINDINGS) {
-            let text = fill(named(FINDINGS, name), &values);
-            assert!(unfilled(&text).is_empty(), "{text}");
         }
     }
 }
