@@ -50,8 +50,7 @@ pub fn chance(dof: usize, half: f64, samples: usize, trials: usize, seed: u64) -
         let (u, v): (f64, f64) = (rng.random(), rng.random());
         (-2.0 * (1.0 - u).ln()).sqrt() * (std::f64::consts::TAU * v).cos()
     };
-    let mut hits = 0;
-    for _ in 0..trials {
+    let hits = (0..trials).filter(|_| {
         let mut counts = vec![0.0; COARSE];
         for _ in 0..samples {
             // A component of a uniform point on the sphere in f dimensions.
@@ -62,9 +61,9 @@ pub fn chance(dof: usize, half: f64, samples: usize, trials: usize, seed: u64) -
                 counts[b as usize] += 1.0;
             }
         }
-        hits += has_dimple(&counts) as usize;
-    }
-    hits as f64 / trials as f64
+        has_dimple(&counts)
+    });
+    hits.count() as f64 / trials as f64
 }
 
 #[cfg(test)]

@@ -49,6 +49,7 @@ impl Ensemble {
             .collect();
         let anchored = b.particles.iter().any(|p| p.is_immovable() || p.is_plane());
         let all = b.particles.iter().filter(|p| !p.is_immovable());
+        let periodic: Vec<bool> = (0..D).map(|k| b.sim_box.axes[k].is_periodic()).collect();
         Ensemble {
             dimension: D,
             energy: b.particles.iter().map(Particle::kinetic_energy).sum(),
@@ -56,10 +57,8 @@ impl Ensemble {
             momentum: (0..D)
                 .map(|k| all.clone().map(|p| p.mass() * p.vel[k]).sum())
                 .collect(),
-            conserved: (0..D)
-                .map(|k| !anchored && b.sim_box.axes[k].is_periodic())
-                .collect(),
-            periodic: (0..D).map(|k| b.sim_box.axes[k].is_periodic()).collect(),
+            conserved: periodic.iter().map(|p| !anchored && *p).collect(),
+            periodic,
             dof: degrees_of_freedom(&b.particles, &b.sim_box),
             size: b.sim_box.size.to_vec(),
             volume: b.sim_box.volume(),
@@ -99,26 +98,18 @@ impl Ensemble {
 
     /// The exact law of v_x of a ball of mass m.
     pub fn velocity_law(&self, mass: f64) -> VelocityMarginal {
+        let (energy, dof) = (self.internal_energy(), self.dof);
         if self.conserved[0] {
-            VelocityMarginal::conserved(
-                mass,
-                self.total_mass,
-                self.momentum[0],
-                self.internal_energy(),
-                self.dof,
-            )
+            VelocityMarginal::conserved(mass, self.total_mass, self.momentum[0], energy, dof)
         } else {
-            VelocityMarginal::free(mass, self.internal_energy(), self.dof)
+            VelocityMarginal::free(mass, energy, dof)
         }
     }
 
     /// The exact law of sqrt(m)|v - V| of a ball of mass m.
     pub fn speed_law(&self, mass: f64) -> SpeedMarginal {
-        let share = if self.conserved.iter().any(|c| *c) {
-            1.0 - mass / self.total_mass
-        } else {
-            1.0
-        };
+        let conserved = self.conserved.iter().any(|c| *c);
+        let share = 1.0 - if conserved { mass / self.total_mass } else { 0.0 };
         SpeedMarginal {
             scale: 2.0 * self.internal_energy() * share,
             dimension: self.dimension as f64,
@@ -128,8 +119,17 @@ impl Ensemble {
 
     /// Balls from left to right at the start (rods keep this order).
     pub fn by_rank(&self) -> Vec<Ball> {
+        self.sorted(|b| b.x)
+    }
+
+    /// Balls from the lightest to the heaviest (equal masses in index order).
+    pub fn by_mass(&self) -> Vec<Ball> {
+        self.sorted(|b| b.mass)
+    }
+
+    fn sorted(&self, key: fn(&Ball) -> f64) -> Vec<Ball> {
         let mut v = self.balls.clone();
-        v.sort_by(|a, b| a.x.total_cmp(&b.x));
+        v.sort_by(|a, b| key(a).total_cmp(&key(b)));
         v
     }
 
@@ -147,20 +147,6 @@ impl Ensemble {
     /// The ball with engine index `index`.
     pub fn ball(&self, index: usize) -> Option<Ball> {
         self.balls.iter().copied().find(|b| b.index == index)
-    }
-
-    pub fn lightest(&self) -> Option<Ball> {
-        self.balls
-            .iter()
-            .copied()
-            .min_by(|a, b| a.mass.total_cmp(&b.mass))
-    }
-
-    pub fn heaviest(&self) -> Option<Ball> {
-        self.balls
-            .iter()
-            .copied()
-            .max_by(|a, b| a.mass.total_cmp(&b.mass))
     }
 
     /// Packing fraction (every ball's volume over the box's).

@@ -4,7 +4,7 @@
 //! a wall beside the wall pressure. Each group is written when the run
 //! observed what it needs, as NaN where the scene does not allow it.
 
-use super::ensemble::Ensemble;
+use super::ensemble::{Ball, Ensemble};
 use super::moments;
 use crate::model::run_output::{Histogram, RunOutput};
 use crate::observe::Context;
@@ -15,26 +15,28 @@ pub fn histogram<'a>(out: &'a RunOutput, name: &str) -> Option<&'a Histogram> {
 }
 
 pub fn measure(e: &Ensemble, ctx: &Context, out: &mut RunOutput) {
-    let mut add = Vec::new();
-    add.push(("kT", e.kt()));
-    if let (Some(light), Some(heavy)) = (e.lightest(), e.heaviest()) {
-        let fit = |i: usize| histogram(out, &format!("velocity_x.{i}")).map(moments::of);
-        if let (Some(l), Some(h)) = (fit(light.index), fit(heavy.index)) {
-            let exact = e.velocity_law(light.mass).std() / e.velocity_law(heavy.mass).std();
-            let ratio = l.std / h.std;
-            add.extend([
-                ("lightest_mass", light.mass),
-                ("heaviest_mass", heavy.mass),
-                ("std_lightest", l.std),
-                ("std_heaviest", h.std),
-                ("std_ratio", ratio),
-                ("sqrt_mass_ratio", (heavy.mass / light.mass).sqrt()),
-                ("std_ratio_exact", exact),
-                ("std_ratio_over_exact", ratio / exact),
-                ("kurtosis_lightest", l.excess_kurtosis),
-                ("kurtosis_heaviest", h.excess_kurtosis),
-            ]);
-        }
+    let mut add = vec![("kT", e.kt())];
+    // The lightest and the heaviest ball, each with its Gaussian fit.
+    let fit = |b: Option<&Ball>| {
+        let b = *b?;
+        Some((b, moments::of(histogram(out, &format!("velocity_x.{}", b.index))?)))
+    };
+    let by_mass = e.by_mass();
+    if let (Some((light, l)), Some((heavy, h))) = (fit(by_mass.first()), fit(by_mass.last())) {
+        let exact = e.velocity_law(light.mass).std() / e.velocity_law(heavy.mass).std();
+        let ratio = l.std / h.std;
+        add.extend([
+            ("lightest_mass", light.mass),
+            ("heaviest_mass", heavy.mass),
+            ("std_lightest", l.std),
+            ("std_heaviest", h.std),
+            ("std_ratio", ratio),
+            ("sqrt_mass_ratio", (heavy.mass / light.mass).sqrt()),
+            ("std_ratio_exact", exact),
+            ("std_ratio_over_exact", ratio / exact),
+            ("kurtosis_lightest", l.excess_kurtosis),
+            ("kurtosis_heaviest", h.excess_kurtosis),
+        ]);
     }
     if let Some(h) = histogram(out, "scaled_velocity_x") {
         add.push(("kurtosis_vx", moments::of(h).excess_kurtosis));
@@ -70,20 +72,14 @@ pub fn measure(e: &Ensemble, ctx: &Context, out: &mut RunOutput) {
 
 /// Z = 1 + c phi g(sigma): c = 2 for disks, 4 for spheres, 1 for rods.
 pub fn contact_factor(dimension: usize) -> f64 {
-    match dimension {
-        1 => 1.0,
-        2 => 2.0,
-        _ => 4.0,
-    }
+    [1.0, 2.0, 4.0][dimension.clamp(1, 3) - 1]
 }
 
 /// Volume of the shell between radii a and b in d dimensions.
 pub fn shell(dimension: usize, a: f64, b: f64) -> f64 {
-    match dimension {
-        1 => 2.0 * (b - a),
-        2 => std::f64::consts::PI * (b * b - a * a),
-        _ => 4.0 / 3.0 * std::f64::consts::PI * (b.powi(3) - a.powi(3)),
-    }
+    let d = dimension.clamp(1, 3);
+    [2.0, std::f64::consts::PI, 4.0 / 3.0 * std::f64::consts::PI][d - 1]
+        * (b.powi(d as i32) - a.powi(d as i32))
 }
 
 /// g(r) at each bin: mean pairs per sample over an ideal gas's N(N-1)/2
@@ -91,11 +87,13 @@ pub fn shell(dimension: usize, a: f64, b: f64) -> f64 {
 pub fn radial_distribution(e: &Ensemble, h: &Histogram) -> Vec<f64> {
     let n = e.balls.len() as f64;
     let pairs = 0.5 * n * (n - 1.0);
-    h.lo.iter()
-        .zip(&h.hi)
-        .zip(&h.count)
-        .map(|((a, b), c)| c / (pairs * shell(e.dimension, *a, *b) / e.volume))
-        .collect()
+    per_bin(h, |a, b| pairs * shell(e.dimension, a, b) / e.volume)
+}
+
+/// Each bin's count over `norm(lo, hi)`.
+fn per_bin(h: &Histogram, norm: impl Fn(f64, f64) -> f64) -> Vec<f64> {
+    let bins = h.lo.iter().zip(&h.hi).zip(&h.count);
+    bins.map(|((a, b), c)| c / norm(*a, *b)).collect()
 }
 
 /// Bins a contact value is extrapolated from: 0.16 sigma.
@@ -133,15 +131,15 @@ pub fn wall_density(e: &Ensemble, h: &Histogram) -> Option<f64> {
     let density = profile(e, h);
     let length = e.size[0];
     let end = |high: bool| {
+        // Distances beyond contact; bins straddling contact are part
+        // empty: start beyond them.
         let mut points: Vec<(f64, f64)> = (h.lo.iter().zip(&h.hi).zip(&density))
             .map(|((a, b), n)| (0.5 * (a + b), *n))
-            .map(|(x, n)| (if high { length - x } else { x }, n))
-            .filter(|(x, _)| *x >= r)
-            .map(|(x, n)| (x - r, n))
+            .map(|(x, n)| ((if high { length - x } else { x }) - r, n))
+            .filter(|(x, _)| *x >= 0.5 * (h.hi[0] - h.lo[0]))
             .collect();
         points.sort_by(|a, b| a.0.total_cmp(&b.0));
-        // Bins straddling contact are part empty: start beyond them.
-        at_contact((points.into_iter()).filter(|(x, _)| *x >= 0.5 * (h.hi[0] - h.lo[0])))
+        at_contact(points.into_iter())
     };
     Some(0.5 * (end(false)? + end(true)?))
 }
@@ -151,9 +149,5 @@ pub fn profile(e: &Ensemble, h: &Histogram) -> Vec<f64> {
     let n = e.balls.len() as f64;
     let samples = h.count.iter().sum::<f64>() / n;
     let cross = e.volume / e.size[0];
-    h.lo.iter()
-        .zip(&h.hi)
-        .zip(&h.count)
-        .map(|((a, b), c)| c / (samples * (b - a) * cross))
-        .collect()
+    per_bin(h, |a, b| samples * (b - a) * cross)
 }

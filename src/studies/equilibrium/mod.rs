@@ -72,20 +72,17 @@ impl Study for Equilibrium {
         let histogram = |n: &str| o.histograms.iter().any(|h| h == n);
         let scalar = |n: &str| o.scalars.iter().any(|s| s == n);
         let contact = histogram("pair_distance");
-        RESULTS
-            .iter()
-            .copied()
-            .filter(|r| match *r {
-                "kT" => true,
-                "kurtosis_vx" => histogram("scaled_velocity_x"),
-                "packing_fraction" | "g_contact" | "Z_contact" => contact,
-                "Z_virial" | "Z_contact_over_virial" => contact && scalar("virial_pressure"),
-                "wall_density" | "contact_theorem_ratio" => {
-                    histogram("density_x") && scalar("wall_pressure")
-                }
-                _ => histogram("velocity_x_each"),
-            })
-            .collect()
+        let written = |r: &&str| match *r {
+            "kT" => true,
+            "kurtosis_vx" => histogram("scaled_velocity_x"),
+            "packing_fraction" | "g_contact" | "Z_contact" => contact,
+            "Z_virial" | "Z_contact_over_virial" => contact && scalar("virial_pressure"),
+            "wall_density" | "contact_theorem_ratio" => {
+                histogram("density_x") && scalar("wall_pressure")
+            }
+            _ => histogram("velocity_x_each"),
+        };
+        RESULTS.iter().copied().filter(written).collect()
     }
     fn per_run(&self, run: &Finished, out: &mut RunOutput) -> Result<(), String> {
         let e = match run.start {
@@ -102,8 +99,7 @@ impl Study for Equilibrium {
             // The excess kurtosis of a component of a uniform point on a
             // sphere in f dimensions (docs/equilibrium.md).
             "kurtosis_lightest" | "kurtosis_heaviest" | "kurtosis_vx" => {
-                let e = Ensemble::of_seed(&d.scene, 0)?;
-                Some(-6.0 / (e.dof + 2.0))
+                Ensemble::of_seed(&d.scene, 0).map(|e| -6.0 / (e.dof + 2.0))
             }
             _ => None,
         }

@@ -7,7 +7,6 @@ use crate::model::run_output::Histogram;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Moments {
-    pub count: f64,
     pub mean: f64,
     pub std: f64,
     /// mu4 / mu2^2 - 3: 0 for a Gaussian.
@@ -21,12 +20,8 @@ pub fn of(h: &Histogram) -> Moments {
     let w = h.hi.first().zip(h.lo.first()).map_or(0.0, |(b, a)| b - a);
     let count: f64 = h.count.iter().sum();
     let moment = |f: &dyn Fn(f64) -> f64| {
-        centres
-            .iter()
-            .zip(&h.count)
-            .map(|(x, c)| c * f(*x))
-            .sum::<f64>()
-            / count
+        let terms = centres.iter().zip(&h.count).map(|(x, c)| c * f(*x));
+        terms.sum::<f64>() / count
     };
     let mean = moment(&|x| x);
     let m2 = moment(&|x| (x - mean).powi(2));
@@ -34,7 +29,6 @@ pub fn of(h: &Histogram) -> Moments {
     let var = m2 - w * w / 12.0;
     let m4c = m4 - w * w * m2 / 2.0 + 7.0 * w.powi(4) / 240.0;
     Moments {
-        count,
         mean,
         std: var.max(0.0).sqrt(),
         excess_kurtosis: m4c / (var * var) - 3.0,

@@ -2,6 +2,7 @@
 //! time from a start with uniform momenta, until it settles at its
 //! equilibrium value; how long that takes and what it costs.
 
+use crate::stats::passage::first_passage;
 use crate::stats::summary::Stats;
 
 /// std of sqrt(m)|v| in d dimensions for Maxwell-Boltzmann at kT = 1:
@@ -21,21 +22,9 @@ pub fn equilibration(t: &[f64], mean: &[Stats]) -> (f64, f64) {
     if n < 4 {
         return (f64::NAN, f64::NAN);
     }
-    let late: Vec<f64> = mean[n / 2..].iter().map(|s| s.mean).collect();
-    let level = late.iter().sum::<f64>() / late.len() as f64;
-    let d0 = (mean[0].mean - level).abs();
-    let target = d0 / std::f64::consts::E;
-    for i in 1..n {
-        let (a, b) = (
-            (mean[i - 1].mean - level).abs(),
-            (mean[i].mean - level).abs(),
-        );
-        if b <= target {
-            let w = if a > b { (a - target) / (a - b) } else { 1.0 };
-            return (level, t[i - 1] + w * (t[i] - t[i - 1]));
-        }
-    }
-    (level, f64::NAN)
+    let level = mean[n / 2..].iter().map(|s| s.mean).sum::<f64>() / (n - n / 2) as f64;
+    let distance: Vec<f64> = mean.iter().map(|s| (s.mean - level).abs()).collect();
+    (level, first_passage(t, &distance, 0.0))
 }
 
 #[cfg(test)]
