@@ -2,6 +2,8 @@
 
 use crate::model::chart::{ChartSpec, Layer, Paint};
 use crate::model::report::Figure;
+use crate::stats::format::pm;
+use crate::stats::point_runs::PointRuns;
 use crate::stats::summary::Stats;
 
 /// A curve of means over replicas against `t`: its band of ± one standard
@@ -112,4 +114,15 @@ pub fn show(figures: &mut Vec<Figure>, figure: Figure, caption: &str) -> String 
     let text = format!("![{caption}]({})\n\n", figure.file);
     figures.push(figure);
     text
+}
+
+/// "mean ± standard error" of a result over a point's runs.
+pub fn stat_pm(p: &PointRuns, name: &str) -> String {
+    let s = p.stat(name);
+    pm(s.mean, s.stderr)
+}
+
+/// Named results as a run's output holds them.
+pub fn scalars<const N: usize>(values: [(&str, f64); N]) -> [(String, f64); N] {
+    values.map(|(k, v)| (k.to_string(), v))
 }

@@ -17,6 +17,8 @@ use crate::studies::options::value;
 
 pub(super) const INTRO: &str = include_str!("intro.md");
 pub(super) const METHODS: &str = include_str!("methods.md");
+/// Captions and the findings' sentences, one per line.
+pub(super) const CAPTIONS: &str = include_str!("captions.md");
 
 /// The runs of one sweep point or case.
 pub(super) type Runs<'a> = PointRuns<'a>;
