@@ -138,12 +138,7 @@ pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
         }
     }
     md.push_str(&methods());
-    Ok(ReportSection {
-        title: "Expansion of the gas".into(),
-        markdown: md,
-        figures,
-        presents: RESULTS.iter().map(|r| r.to_string()).collect(),
-    })
+    Ok(crate::studies::curves::section("Expansion of the gas", md, figures, RESULTS))
 }
 
 fn methods() -> String {

@@ -78,12 +78,8 @@ pub fn section(d: &Descriptor, runs: &AllRuns) -> anyhow::Result<ReportSection> 
         md.push_str(&super::chain::part(&rods, &mut figures));
     }
     md.push_str(METHODS);
-    Ok(ReportSection {
-        title: "Heat transfer across the boundary".into(),
-        markdown: md,
-        figures,
-        presents: RESULTS.iter().map(|r| r.to_string()).collect(),
-    })
+    let title = "Heat transfer across the boundary";
+    Ok(crate::studies::curves::section(title, md, figures, RESULTS))
 }
 
 #[cfg(test)]

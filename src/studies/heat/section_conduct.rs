@@ -25,25 +25,19 @@ fn above_zero(s: &Stats) -> bool {
 /// The runs' mean profile: the temperature's statistics per slab, and the
 /// profile of their means (densities averaged, weights summed).
 fn mean_profile(profiles: &[Profile]) -> (Vec<Stats>, Profile) {
-    let bins = 0..profiles[0].x.len();
-    let t_mean: Vec<Stats> = bins
-        .clone()
-        .map(|b| {
-            let at = profiles.iter().map(|p| p.temperature[b]);
-            Stats::of(&at.filter(|v| v.is_finite()).collect::<Vec<_>>())
-        })
+    // Per slab, one of the profiles' columns over the runs.
+    let per_slab = |column: fn(&Profile) -> &[f64]| {
+        (0..profiles[0].x.len()).map(move |b| profiles.iter().map(move |p| column(p)[b]))
+    };
+    let t_mean: Vec<Stats> = per_slab(|p| &p.temperature)
+        .map(|at| Stats::of(&at.filter(|v| v.is_finite()).collect::<Vec<_>>()))
         .collect();
     let runs = profiles.len() as f64;
     let pooled = Profile {
         x: profiles[0].x.clone(),
         temperature: t_mean.iter().map(|s| s.mean).collect(),
-        density: bins
-            .clone()
-            .map(|b| profiles.iter().map(|p| p.density[b]).sum::<f64>() / runs)
-            .collect(),
-        weight: bins
-            .map(|b| profiles.iter().map(|p| p.weight[b]).sum())
-            .collect(),
+        density: per_slab(|p| &p.density).map(|at| at.sum::<f64>() / runs).collect(),
+        weight: per_slab(|p| &p.weight).map(|at| at.sum()).collect(),
     };
     (t_mean, pooled)
 }

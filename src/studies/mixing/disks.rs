@@ -31,9 +31,7 @@ pub fn per_run(
     species: &[String],
     out: &mut RunOutput,
 ) -> Result<(), String> {
-    let balls: Vec<_> = built
-        .particles
-        .iter()
+    let balls: Vec<_> = (built.particles.iter())
         .filter(|p| !p.is_immovable() && !p.is_plane())
         .collect();
     let n = balls.len();

@@ -35,22 +35,12 @@ pub fn per_run(d: &Descriptor, built: &Built<1>, out: &mut RunOutput) -> Result<
                 .into(),
         );
     }
-    let moving: Vec<_> = built
-        .particles
-        .iter()
-        .filter(|p| !p.is_immovable())
-        .collect();
-    let n = moving.len();
+    let n = built.particles.iter().filter(|p| !p.is_immovable()).count();
     // The hot rod's mass over the lightest mass the gas may draw (1 in the
     // bundled study): a property of the point, not of the draw.
-    let lightest = crate::scene::resolve(&d.scene)
-        .map(|s| {
-            s.species
-                .iter()
-                .map(|k| k.mass.bounds()[0])
-                .fold(f64::INFINITY, f64::min)
-        })
-        .unwrap_or(f64::NAN);
+    let lightest = crate::scene::resolve(&d.scene).map_or(f64::NAN, |s| {
+        (s.species.iter().map(|k| k.mass.bounds()[0])).fold(f64::INFINITY, f64::min)
+    });
     let hot_mass = built.piston.map_or(f64::NAN, |i| built.particles[i].mass());
     let y = out
         .series("energy_concentration")

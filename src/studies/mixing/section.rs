@@ -74,12 +74,8 @@ pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
         markdown.push_str(&section_disks::part(&disks, &mut figures));
     }
     markdown.push_str(METHODS);
-    Ok(ReportSection {
-        title: "Mixing time".into(),
-        markdown,
-        figures,
-        presents: super::RESULTS.iter().map(|r| r.to_string()).collect(),
-    })
+    let results = super::RESULTS;
+    Ok(crate::studies::curves::section("Mixing time", markdown, figures, results))
 }
 
 #[cfg(test)]
