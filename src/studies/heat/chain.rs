@@ -38,11 +38,7 @@ fn against_theory(over: &str, alpha: f64, se: f64) -> String {
     ]
     .map(|(name, a)| {
         let z = (alpha - a) / se;
-        let word = if z.abs() < 4.0 {
-            "agrees with"
-        } else {
-            "differs from"
-        };
+        let word = ["differs from", "agrees with"][(z.abs() < 4.0) as usize];
         format!("{word} {name} (z = {z:+.1})")
     });
     format!("Over {over}, α = {} {}.", pm(alpha, se), each.join(", "))

@@ -18,10 +18,7 @@ pub type Point<'a> = PointRuns<'a>;
 
 /// How many runs of a point mixed within their length.
 pub fn mixed(p: &Point) -> usize {
-    p.outs
-        .iter()
-        .filter(|o| o.scalar("mixed") == Some(1.0))
-        .count()
+    (p.outs.iter()).filter(|o| o.scalar("mixed") == Some(1.0)).count()
 }
 
 pub fn all_mixed(p: &Point) -> bool {
