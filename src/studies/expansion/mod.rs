@@ -84,8 +84,12 @@ impl Study for Expansion {
         let (t, f) = (&series.t, &series.value);
         // Only an expansion relaxes: a gas started everywhere has no time.
         let left = starts_left(run.descriptor);
-        // The excess f - 1/2 relaxes to 1/e.
-        let tau = left.then(|| first_passage(t, f, 0.5)).unwrap_or(f64::NAN);
+        let tau = if left {
+            // The excess f - 1/2 relaxes to 1/e.
+            first_passage(t, f, 0.5)
+        } else {
+            f64::NAN
+        };
         let (mean, variance) = late(t, f);
         let drawn = draw(run.descriptor);
         let start = drawn.filter(|_| left);
