@@ -17,6 +17,7 @@ pub mod named;
 pub mod oscillation;
 pub mod passage;
 pub mod point_runs;
+pub mod power_law;
 pub mod quadratic;
 pub mod replicas;
 pub mod summary;

@@ -6,6 +6,7 @@ use crate::engine::boundary::ball_volume;
 use crate::model::descriptor::Descriptor;
 use crate::model::scene::{Drawn, Velocities};
 use crate::scene::Built;
+use crate::stats::groups::first_seen;
 use crate::stats::late::late_mean;
 use crate::theory::expansion::{Diffusive, FreeExpansion, Mixture, Speeds, compressibility};
 use crate::theory::expansion_rods::{Collisionless, Rods};
@@ -71,13 +72,10 @@ impl Gas {
         size: &[f64],
         groups: impl IntoIterator<Item = (f64, f64, usize)>,
     ) -> Gas {
-        let mut kinds: Vec<(f64, f64, usize)> = Vec::new();
-        for (r, m, c) in groups {
-            match kinds.iter_mut().find(|k| k.0 == r && k.1 == m) {
-                Some(k) => k.2 += c,
-                None => kinds.push((r, m, c)),
-            }
-        }
+        let same = |a: &(f64, f64, usize), b: &(f64, f64, usize)| (a.0, a.1) == (b.0, b.1);
+        let kinds: Vec<(f64, f64, usize)> = (first_seen(groups, same).into_iter())
+            .map(|g| (g[0].0, g[0].1, g.iter().map(|k| k.2).sum()))
+            .collect();
         let n: usize = kinds.iter().map(|k| k.2).sum();
         let diameter = kinds.iter().map(|k| 2.0 * k.0 * k.2 as f64).sum::<f64>() / n as f64;
         let filled: f64 = (kinds.iter())

@@ -15,6 +15,7 @@ use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
 use crate::model::report::ReportSection;
 use crate::model::run_output::{RunOutput, Series};
+use crate::studies::curves::scalars;
 use crate::stats::diffusion::diffusion;
 use crate::stats::ensemble::Runs;
 use crate::stats::passage::first_passage;
@@ -100,24 +101,21 @@ impl Study for Expansion {
         // periodic y axis, the gas filling the box) measures D along y.
         let msd_y = |s: &&Series| s.observable.starts_with("msd.") && s.observable.ends_with(".y");
         let measured = (out.series.iter().find(msd_y)).map(|s| diffusion(&s.t, &s.value).0);
-        out.scalars.extend(
-            [
-                ("particles", n),
-                ("number_density", gas.density),
-                ("knudsen", gas.knudsen()),
-                ("relaxation_time", tau),
-                ("relaxation_time_free", free),
-                ("relaxation_ratio", tau / free),
-                ("diffusion_enskog", enskog),
-                ("relaxation_time_diffusive", diffusive.unwrap_or(f64::NAN)),
-                ("late_mean", mean),
-                // Independent particles: binomial, variance 1/(4N).
-                ("late_variance_ratio", variance * 4.0 * n),
-                // Hard particles exclude each other: S(0) of the fluid.
-                ("compressibility", gas.compressibility()),
-            ]
-            .map(|(k, v)| (k.to_string(), v)),
-        );
+        out.scalars.extend(scalars([
+            ("particles", n),
+            ("number_density", gas.density),
+            ("knudsen", gas.knudsen()),
+            ("relaxation_time", tau),
+            ("relaxation_time_free", free),
+            ("relaxation_ratio", tau / free),
+            ("diffusion_enskog", enskog),
+            ("relaxation_time_diffusive", diffusive.unwrap_or(f64::NAN)),
+            ("late_mean", mean),
+            // Independent particles: binomial, variance 1/(4N).
+            ("late_variance_ratio", variance * 4.0 * n),
+            // Hard particles exclude each other: S(0) of the fluid.
+            ("compressibility", gas.compressibility()),
+        ]));
         if self.writes(run.descriptor).contains(&"diffusion_measured") {
             let d = measured.unwrap_or(f64::NAN);
             out.scalars.push(("diffusion_measured".into(), d));

@@ -7,12 +7,13 @@
 //! left behind are "cold" about their slab's mean.
 
 use super::group::Group;
-use crate::model::chart::{ChartSpec, Layer, colour};
+use crate::model::chart::colour;
 use crate::model::report::Figure;
 use crate::model::run_output::{RunOutput, Series};
 use crate::stats::fill::fill;
 use crate::stats::format::num;
 use crate::stats::table::table_row;
+use crate::studies::curves::{figure, polyline};
 use crate::theory::adiabat::temperature_ratio;
 
 const TEXT: &str = include_str!("profiles.md");
@@ -59,17 +60,13 @@ pub fn pool(out: &mut RunOutput) {
 /// The times shown, in collisionless relaxation times.
 const TIMES: [f64; 5] = [0.0, 0.5, 1.0, 2.0, 4.0];
 
-/// One time's profile: slab centres, density over the final mean density,
-/// kT over the start's, and the adiabat's kT at each slab's density.
+/// One time's profile: per slab the density over the final mean density,
+/// kT over the start's, and the hard-particle and the ideal gas's adiabat
+/// at the slab's density; and the share of the kinetic energy not in the
+/// slabs' flow.
 struct Profile {
     t: f64,
-    x: Vec<f64>,
-    density: Vec<f64>,
-    temperature: Vec<f64>,
-    adiabat: Vec<f64>,
-    /// The ideal gas's adiabat.
-    ideal: Vec<f64>,
-    /// Share of the kinetic energy not in the slabs' flow.
+    slabs: Vec<[f64; 4]>,
     thermal_share: f64,
 }
 
@@ -95,69 +92,50 @@ pub fn section(g: &Group, name: &str) -> Option<(Vec<Figure>, String)> {
     let d = gas.dimension as f64;
     let width = gas.length / slabs as f64;
     let slab_volume = gas.volume() / slabs as f64;
-    let mut profiles = Vec::new();
-    for k in TIMES {
-        let want = k * tau;
-        let i = times
-            .iter()
-            .position(|&t| t >= want - 1e-9)
-            .unwrap_or(times.len() - 1);
-        let mut density = Vec::new();
-        let mut temperature = Vec::new();
-        let mut adiabat = Vec::new();
-        let mut ideal = Vec::new();
+    let x: Vec<f64> = (0..slabs).map(|b| (b as f64 + 0.5) * width).collect();
+    let profile = |k: f64| {
+        let i = (times.iter().position(|&t| t >= k * tau - 1e-9)).unwrap_or(times.len() - 1);
         let (mut thermal, mut total) = (0.0, 0.0);
-        for (count, weight, sum) in &means {
-            let (count, weight, sum) = (count[i].mean, weight[i].mean, sum[i].mean);
-            let rel = count / slab_volume / gas.density;
-            let kt = if weight > 0.0 { sum / weight } else { f64::NAN };
-            density.push(rel);
-            temperature.push(kt / kt0);
-            // The start had density 2 n in the left half.
-            let eta = gas.packing;
-            adiabat.push(temperature_ratio(gas.dimension, 2.0 * eta, rel * eta));
-            ideal.push((rel / 2.0).powf(2.0 / d));
-            if kt.is_finite() {
-                thermal += weight * kt;
-            }
-            total += count;
-        }
-        profiles.push(Profile {
+        let slabs = (means.iter())
+            .map(|(count, weight, sum)| {
+                let (count, weight, sum) = (count[i].mean, weight[i].mean, sum[i].mean);
+                let rel = count / slab_volume / gas.density;
+                let kt = if weight > 0.0 { sum / weight } else { f64::NAN };
+                if kt.is_finite() {
+                    thermal += weight * kt;
+                }
+                total += count;
+                // The start had density 2 n in the left half.
+                let eta = gas.packing;
+                let adiabat = temperature_ratio(gas.dimension, 2.0 * eta, rel * eta);
+                [rel, kt / kt0, adiabat, (rel / 2.0).powf(2.0 / d)]
+            })
+            .collect();
+        // d kT per particle's internal motion over d kT0 per particle.
+        let thermal_share = thermal / (total * kt0);
+        Profile {
             t: times[i],
-            x: (0..slabs).map(|b| (b as f64 + 0.5) * width).collect(),
-            density,
-            temperature,
-            adiabat,
-            ideal,
-            // d kT per particle's internal motion over d kT0 per particle.
-            thermal_share: thermal / (total * kt0),
-        });
-    }
-    let density = chart(
-        &profiles,
-        |p| &p.density,
-        None,
-        format!("Density along x during the expansion, {}", g.label()),
-        "density n(x) / n̄ (n̄ of the gas filling the box)",
-    );
-    let temperature = chart(
-        &profiles,
-        |p| &p.temperature,
-        Some(|p: &Profile| &p.adiabat),
-        format!("Temperature along x during the expansion, {}", g.label()),
-        "kT(x) / kT₀ about the slab's flow (dashed: the hard-particle adiabat)",
-    );
+            slabs,
+            thermal_share,
+        }
+    };
+    let profiles = TIMES.map(profile);
     let (fd, ft) = (
         format!("expansion_density_{name}.svg"),
         format!("expansion_temperature_{name}.svg"),
     );
+    let label = g.label();
+    let title = format!("Density along x during the expansion, {label}");
+    let y_label = "density n(x) / n̄ (n̄ of the gas filling the box)";
+    let density = chart(&fd, &profiles, &x, (0, None), (title, y_label));
+    let title = format!("Temperature along x during the expansion, {label}");
+    let y_label = "kT(x) / kT₀ about the slab's flow (dashed: the hard-particle adiabat)";
+    let temperature = chart(&ft, &profiles, &x, (1, Some(2)), (title, y_label));
     let (l, r) = (slabs / 2 - 1, slabs / 2);
     let mut rows = String::new();
     for p in &profiles {
         let mut cells = vec![num(p.t), num(p.t / tau)];
-        for b in [l, r] {
-            cells.extend([p.density[b], p.temperature[b], p.adiabat[b], p.ideal[b]].map(num));
-        }
+        cells.extend([l, r].iter().flat_map(|&b| p.slabs[b].map(num)));
         cells.push(num(p.thermal_share));
         rows.push_str(&table_row(&cells));
     }
@@ -165,49 +143,34 @@ pub fn section(g: &Group, name: &str) -> Option<(Vec<Figure>, String)> {
         TEXT,
         &[
             ("name", name.into()),
-            ("label", g.label()),
+            ("label", label),
             ("times", TIMES.map(num).join(", ")),
             ("runs", g.outs.len().to_string()),
-            ("density_file", fd.clone()),
-            ("temperature_file", ft.clone()),
+            ("density_file", fd),
+            ("temperature_file", ft),
             ("rows", rows),
         ],
     );
-    let figure = |file: String, chart| Figure { file, chart };
-    Some((vec![figure(fd, density), figure(ft, temperature)], md))
+    Some((vec![density, temperature], md))
 }
 
+/// The profiles' `value` (a column of their slabs) against x in `file`,
+/// each beside its `theory` column, dashed, if it has one.
 fn chart(
+    file: &str,
     profiles: &[Profile],
-    value: impl Fn(&Profile) -> &Vec<f64>,
-    theory: Option<fn(&Profile) -> &Vec<f64>>,
-    title: String,
-    y_label: &str,
-) -> ChartSpec {
+    x: &[f64],
+    (value, theory): (usize, Option<usize>),
+    (title, y_label): (String, &str),
+) -> Figure {
     let mut layers = Vec::new();
     for (i, p) in profiles.iter().enumerate() {
-        layers.push(Layer::Line {
-            points: p.x.iter().copied().zip(value(p).iter().copied()).collect(),
-            paint: colour(i),
-            width: 2,
-            dashed: false,
-            label: Some(format!("t = {}", num(p.t))),
-        });
-        if let Some(f) = theory {
-            layers.push(Layer::Line {
-                points: p.x.iter().copied().zip(f(p).iter().copied()).collect(),
-                paint: colour(i).faded(0.7),
-                width: 1,
-                dashed: true,
-                label: None,
-            });
+        let column = |k: usize| x.iter().zip(&p.slabs).map(|(x, s)| (*x, s[k])).collect();
+        let label = Some(format!("t = {}", num(p.t)));
+        layers.push(polyline(column(value), colour(i), 2, false, label));
+        if let Some(k) = theory {
+            layers.push(polyline(column(k), colour(i).faded(0.7), 1, true, None));
         }
     }
-    ChartSpec {
-        title,
-        x_label: "x [σ]".into(),
-        y_label: y_label.into(),
-        layers,
-        ..Default::default()
-    }
+    figure(file, (title, "x [σ]", y_label), (false, false), layers)
 }

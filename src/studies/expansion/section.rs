@@ -14,8 +14,8 @@ use crate::stats::ensemble::Runs;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
 use crate::stats::groups::first_seen;
-use crate::stats::line::line;
 use crate::stats::named::named;
+use crate::stats::power_law::{PowerLaw, log_point};
 use crate::stats::table::table_row;
 use crate::theory::expansion_rods::Collisionless;
 
@@ -62,21 +62,14 @@ fn free_z(g: &Group, free: Option<Collisionless>) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// Power of p_max in the relaxation time of one gas: the weighted slope of
-/// ln tau against ln p_max (weights from the runs' standard errors) and its
-/// standard error.
+/// Power of p_max in the relaxation time of one gas (weights from the
+/// runs' standard errors) and its standard error.
 fn exponent(gs: &[&Group]) -> (f64, f64) {
-    let (mut x, mut y, mut w) = (Vec::new(), Vec::new(), Vec::new());
-    for g in gs {
-        let tau = g.stat("relaxation_time");
-        if tau.mean > 0.0 && tau.stderr > 0.0 && g.p_max() > 0.0 {
-            x.push(g.p_max().ln());
-            y.push(tau.mean.ln());
-            w.push((tau.mean / tau.stderr).powi(2));
-        }
-    }
-    let (slope, se, _) = line(&x, &y, Some(&w));
-    (slope, se)
+    let logs: Vec<_> = (gs.iter())
+        .filter_map(|g| log_point(g.p_max(), &g.stat("relaxation_time")))
+        .collect();
+    let fit = PowerLaw::fit(&logs, 2);
+    (fit.exponent, fit.error)
 }
 
 fn z(mean: f64, theory: f64, se: f64) -> f64 {
@@ -129,14 +122,9 @@ pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
     let diffusion = all.iter().find(|g| measures_d(g));
     let measured_point = diffusion.and_then(|g| diffusion_text(&mut md, g));
     if sweep.iter().any(|g| g.p_max().is_finite()) {
-        for (file, chart) in [
-            ("expansion_tau_p_max.svg", tau_against_p(&gases)),
-            (
-                "expansion_tau_knudsen.svg",
-                tau_against_knudsen(&sweep, measured_point),
-            ),
-        ] {
-            let file = file.into();
+        let knudsen = tau_against_knudsen(&sweep, measured_point);
+        for (name, chart) in [("p_max", tau_against_p(&gases)), ("knudsen", knudsen)] {
+            let file = format!("expansion_tau_{name}.svg");
             figures.push(Figure { file, chart });
         }
         md.push_str(&exponent_table(&gases));
@@ -150,12 +138,7 @@ pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
         }
     }
     md.push_str(&methods());
-    Ok(ReportSection {
-        title: "Expansion of the gas".into(),
-        markdown: md,
-        figures,
-        presents: RESULTS.iter().map(|r| r.to_string()).collect(),
-    })
+    Ok(crate::studies::curves::section("Expansion of the gas", md, figures, RESULTS))
 }
 
 fn methods() -> String {
@@ -261,10 +244,8 @@ fn left_fractions<'a>(
         let runs = g.outs.len().to_string();
         let values = [("label", g.label()), ("runs", runs), ("file", file.clone())];
         md.push_str(&caption("single", &values));
-        figures.push(Figure {
-            file,
-            chart: single(g),
-        });
+        let chart = single(g);
+        figures.push(Figure { file, chart });
     }
 }
 
@@ -281,9 +262,12 @@ fn points_table<'a>(groups: impl Iterator<Item = &'a &'a Group<'a>>) -> String {
         let named = format!("{} (Kn = {})", g.label(), num(kn));
         free.add(named.clone(), zf);
         diffusive.add(named, z(tau.mean, tau_diffusive, tau.stderr));
-        let late = g.stat("late_mean");
-        let var = g.stat("late_variance_ratio");
         let s0 = g.stat("compressibility").mean;
+        // "mean ± se (z)" of a result against its theory.
+        let with_z = |name: &str, theory: f64| {
+            let s = g.stat(name);
+            format!("{} ({})", pm(s.mean, s.stderr), num(z(s.mean, theory, s.stderr)))
+        };
         let runs = g.outs.len();
         rows.push_str(&table_row(&[
             g.label(),
@@ -297,16 +281,8 @@ fn points_table<'a>(groups: impl Iterator<Item = &'a &'a Group<'a>>) -> String {
             num(zf),
             num(free_z(g, g.free_thermal())),
             num(tau_diffusive),
-            format!(
-                "{} ({})",
-                pm(late.mean, late.stderr),
-                num(z(late.mean, 0.5, late.stderr))
-            ),
-            format!(
-                "{} ({})",
-                pm(var.mean, var.stderr),
-                num(z(var.mean, s0, var.stderr))
-            ),
+            with_z("late_mean", 0.5),
+            with_z("late_variance_ratio", s0),
             num(s0),
             num(g.cpu()),
             count(g.collisions()),

@@ -23,6 +23,7 @@ use crate::model::run_output::RunOutput;
 use crate::model::scene::SceneSpec;
 use crate::stats::ensemble::Runs;
 use crate::stats::late::late_mean;
+use crate::studies::curves::scalars;
 use crate::theory::heat::{conductivity_dilute, enskog_factor};
 pub use conduct::{Line, Profile, centre_density};
 pub use gas::{Experiment, Gas};
@@ -194,19 +195,16 @@ fn relaxation(d: &Descriptor, gas: &Gas, wall: f64, out: &mut RunOutput) -> Resu
     let tau_free = gas.free(wall, start, until).map_or(f64::NAN, |f| {
         f.relaxation_time(gas.dimension as f64 / 2.0 * wall)
     });
-    out.scalars.extend(
-        [
-            ("start_temperature", start),
-            ("relaxation_time", tau),
-            ("relaxation_time_model", tau_model),
-            ("relaxation_ratio", tau / tau_model),
-            ("relaxation_time_free", tau_free),
-            ("relaxation_ratio_free", tau / tau_free),
-            ("initial_rate_ratio", initial_ratio(&t, &temp, &m, window)),
-            ("late_temperature", late_mean(&t, &temp)),
-        ]
-        .map(|(k, v)| (k.to_string(), v)),
-    );
+    out.scalars.extend(scalars([
+        ("start_temperature", start),
+        ("relaxation_time", tau),
+        ("relaxation_time_model", tau_model),
+        ("relaxation_ratio", tau / tau_model),
+        ("relaxation_time_free", tau_free),
+        ("relaxation_ratio_free", tau / tau_free),
+        ("initial_rate_ratio", initial_ratio(&t, &temp, &m, window)),
+        ("late_temperature", late_mean(&t, &temp)),
+    ]));
     Ok(())
 }
 
@@ -245,28 +243,25 @@ fn conduction(
         let (a, b) = (gas.diameter / 2.0, length - gas.diameter / 2.0);
         if hot_high { (b, a) } else { (a, b) }
     };
-    out.scalars.extend(
-        [
-            ("flux_in", flux_in),
-            ("flux_out", flux_out),
-            ("flux_imbalance", flux_in - flux_out),
-            ("gradient", line.slope),
-            ("centre_temperature", line.centre),
-            ("centre_density", n),
-            ("centre_packing", phi),
-            ("conductivity", kappa),
-            // The whole chain's: the walls' temperature difference over
-            // their distance, jumps included (what 1D studies of anomalous
-            // conduction report against N).
-            ("conductivity_effective", flux * length / (hot - cold)),
-            ("conductivity_dilute", dilute),
-            ("conductivity_enskog", enskog),
-            ("conductivity_ratio_dilute", kappa / dilute),
-            ("conductivity_ratio_enskog", kappa / enskog),
-            ("jump_hot", hot - line.at(x_hot)),
-            ("jump_cold", line.at(x_cold) - cold),
-        ]
-        .map(|(k, v)| (k.to_string(), v)),
-    );
+    out.scalars.extend(scalars([
+        ("flux_in", flux_in),
+        ("flux_out", flux_out),
+        ("flux_imbalance", flux_in - flux_out),
+        ("gradient", line.slope),
+        ("centre_temperature", line.centre),
+        ("centre_density", n),
+        ("centre_packing", phi),
+        ("conductivity", kappa),
+        // The whole chain's: the walls' temperature difference over
+        // their distance, jumps included (what 1D studies of anomalous
+        // conduction report against N).
+        ("conductivity_effective", flux * length / (hot - cold)),
+        ("conductivity_dilute", dilute),
+        ("conductivity_enskog", enskog),
+        ("conductivity_ratio_dilute", kappa / dilute),
+        ("conductivity_ratio_enskog", kappa / enskog),
+        ("jump_hot", hot - line.at(x_hot)),
+        ("jump_cold", line.at(x_cold) - cold),
+    ]));
     Ok(())
 }

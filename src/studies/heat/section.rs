@@ -17,6 +17,8 @@ use crate::studies::options::value;
 
 pub(super) const INTRO: &str = include_str!("intro.md");
 pub(super) const METHODS: &str = include_str!("methods.md");
+/// Captions and the findings' sentences, one per line.
+pub(super) const CAPTIONS: &str = include_str!("captions.md");
 
 /// The runs of one sweep point or case.
 pub(super) type Runs<'a> = PointRuns<'a>;
@@ -76,12 +78,8 @@ pub fn section(d: &Descriptor, runs: &AllRuns) -> anyhow::Result<ReportSection> 
         md.push_str(&super::chain::part(&rods, &mut figures));
     }
     md.push_str(METHODS);
-    Ok(ReportSection {
-        title: "Heat transfer across the boundary".into(),
-        markdown: md,
-        figures,
-        presents: RESULTS.iter().map(|r| r.to_string()).collect(),
-    })
+    let title = "Heat transfer across the boundary";
+    Ok(crate::studies::curves::section(title, md, figures, RESULTS))
 }
 
 #[cfg(test)]

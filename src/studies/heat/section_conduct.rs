@@ -3,15 +3,16 @@
 //! fluxes and the conductivity beside Chapman-Enskog and Enskog, the
 //! temperature jumps; then κ over Chapman-Enskog's against the packing.
 
-use super::section::{Runs, bar, dashed, figure, label, measured, with_z};
+use super::section::{CAPTIONS, Runs, bar, dashed, figure, label, measured, with_z};
 use super::{Gas, Line, Profile};
-use crate::model::chart::{Layer, colour};
+use crate::model::chart::colour;
 use crate::model::report::Figure;
 use crate::stats::fill::fill;
 use crate::stats::format::{count, num, pm};
+use crate::stats::named::named;
 use crate::stats::summary::{Stats, z_score};
 use crate::stats::table::table_row;
-use crate::studies::curves::mean_with_band;
+use crate::studies::curves::{markers, mean_with_band, polyline, sampled, show, stat_pm};
 use crate::theory::heat::enskog_factor;
 
 const TEXT: &str = include_str!("conduct.md");
@@ -24,25 +25,19 @@ fn above_zero(s: &Stats) -> bool {
 /// The runs' mean profile: the temperature's statistics per slab, and the
 /// profile of their means (densities averaged, weights summed).
 fn mean_profile(profiles: &[Profile]) -> (Vec<Stats>, Profile) {
-    let bins = 0..profiles[0].x.len();
-    let t_mean: Vec<Stats> = bins
-        .clone()
-        .map(|b| {
-            let at = profiles.iter().map(|p| p.temperature[b]);
-            Stats::of(&at.filter(|v| v.is_finite()).collect::<Vec<_>>())
-        })
+    // Per slab, one of the profiles' columns over the runs.
+    let per_slab = |column: fn(&Profile) -> &[f64]| {
+        (0..profiles[0].x.len()).map(move |b| profiles.iter().map(move |p| column(p)[b]))
+    };
+    let t_mean: Vec<Stats> = per_slab(|p| &p.temperature)
+        .map(|at| Stats::of(&at.filter(|v| v.is_finite()).collect::<Vec<_>>()))
         .collect();
     let runs = profiles.len() as f64;
     let pooled = Profile {
         x: profiles[0].x.clone(),
         temperature: t_mean.iter().map(|s| s.mean).collect(),
-        density: bins
-            .clone()
-            .map(|b| profiles.iter().map(|p| p.density[b]).sum::<f64>() / runs)
-            .collect(),
-        weight: bins
-            .map(|b| profiles.iter().map(|p| p.weight[b]).sum())
-            .collect(),
+        density: per_slab(|p| &p.density).map(|at| at.sum::<f64>() / runs).collect(),
+        weight: per_slab(|p| &p.weight).map(|at| at.sum()).collect(),
     };
     (t_mean, pooled)
 }
@@ -53,92 +48,85 @@ pub fn part(
     points: &[(Gas, (f64, f64, bool), Runs)],
     figures: &mut Vec<Figure>,
 ) -> String {
-    let mut rows = String::new();
-    let mut jumps = String::new();
-    let (mut resolved, mut unresolved) = (Vec::new(), Vec::new());
-    let mut pictures = String::new();
-    let mut bars = Vec::new();
-    for (k, (gas, (hot, cold, _), rs)) in points.iter().enumerate() {
+    let (mut rows, mut jumps, mut pictures) = (String::new(), String::new(), String::new());
+    let (mut resolved, mut unresolved, mut bars) = (Vec::new(), Vec::new(), Vec::new());
+    for (k, point) in points.iter().enumerate() {
+        let (gas, (hot, cold, _), rs) = point;
         let name = label(rs, gas);
-        let length = gas.size[0];
-        let profiles: Vec<Profile> = rs
-            .outs
-            .iter()
+        let profiles: Vec<Profile> = (rs.outs.iter())
             .filter_map(|o| Profile::of_run(gas, o))
             .collect();
         if profiles.is_empty() {
             continue;
         }
-        let (t_mean, pooled) = mean_profile(&profiles);
-        let line = Line::fit(&pooled, length, width);
         let phi = rs.stat("centre_packing");
-        let centre_n = rs.stat("centre_density").mean;
+        let kn = gas.knudsen_at(rs.stat("centre_density").mean);
         let ratio_0 = rs.stat("conductivity_ratio_dilute");
         if ratio_0.mean.is_finite() {
             bars.push(bar(phi.mean, &ratio_0));
         }
-        let s = |name: &str| {
-            let s = rs.stat(name);
-            pm(s.mean, s.stderr)
-        };
         let size: Vec<String> = gas.size.iter().map(|&l| num(l)).collect();
         rows.push_str(&table_row(&[
             name.clone(),
             size.join(" × "),
             format!("{} / {}", num(*hot), num(*cold)),
             rs.outs.len().to_string(),
-            s("flux_in"),
-            s("flux_out"),
+            stat_pm(rs, "flux_in"),
+            stat_pm(rs, "flux_out"),
             with_z(&rs.stat("flux_imbalance"), 0.0),
             pm(phi.mean, phi.stderr),
-            num(gas.knudsen_at(centre_n)),
-            s("conductivity"),
+            num(kn),
+            stat_pm(rs, "conductivity"),
             num(rs.stat("conductivity_dilute").mean),
             num(rs.stat("conductivity_enskog").mean),
             with_z(&rs.stat("conductivity_ratio_enskog"), 1.0),
             pm(ratio_0.mean, ratio_0.stderr),
             num(rs.cpu()),
         ]));
-        let (jh, jc) = (rs.stat("jump_hot"), rs.stat("jump_cold"));
+        let (jh, jc, g) = (rs.stat("jump_hot"), rs.stat("jump_cold"), rs.stat("gradient"));
         match above_zero(&jh) && above_zero(&jc) {
             true => resolved.push(name.clone()),
             false => unresolved.push(name.clone()),
         }
-        let g = rs.stat("gradient");
         jumps.push_str(&table_row(&[
-            name.clone(),
+            name,
             pm(g.mean, g.stderr),
             with_z(&jh, 0.0),
             with_z(&jc, 0.0),
             num(jh.mean / g.mean.abs()),
             num(jc.mean / g.mean.abs()),
-            num(gas.knudsen_at(centre_n) * length),
+            num(kn * gas.size[0]),
             count(rs.collisions()),
         ]));
-        let (figure, text) = profile_figure(k, &points[k], width, &pooled, &t_mean, &line);
-        figures.push(figure);
-        pictures.push_str(&text);
+        pictures.push_str(&profile_figure(k, point, width, &profiles, figures));
     }
-    let jumps_verdict = match (resolved.is_empty(), unresolved.is_empty()) {
-        (_, true) => "Here it does at every point: each jump is more than 4 standard errors above zero.".into(),
-        (true, false) => "Here no point resolves both jumps: each has one within 4 standard errors of zero, or below it.".into(),
-        (false, false) => format!(
-            "Here both jumps are more than 4 standard errors above zero at {}; at {} one is not resolved (within 4 standard errors of zero, or below it).",
-            resolved.join("; "),
-            unresolved.join("; ")
-        ),
+    let verdict = match (resolved.is_empty(), unresolved.is_empty()) {
+        (_, true) => "jumps_all",
+        (true, false) => "jumps_none",
+        (false, false) => "jumps_some",
     };
-    let conductivity_figure = if bars.is_empty() {
-        String::new()
-    } else {
-        conductivity_chart(points[0].0.dimension, bars, figures)
-    };
+    let verdict_values = [
+        ("resolved", resolved.join("; ")),
+        ("unresolved", unresolved.join("; ")),
+    ];
+    let mut conductivity_figure = String::new();
+    if !bars.is_empty() {
+        // κ over Chapman-Enskog's against the packing, beside Enskog's factor.
+        let (dim, top) = (points[0].0.dimension, bars.iter().map(|b| b.0).fold(0.0, f64::max));
+        let enskog = sampled(0.0, top * 1.1, 50, |p| enskog_factor(dim, p));
+        let mut layers = vec![dashed(enskog, colour(1), "Enskog".into())];
+        layers.extend(measured(bars, colour(0), "measured (mean ± standard error)"));
+        let title = "Thermal conductivity over the dilute (Chapman-Enskog) value".into();
+        let axes = (title, "packing fraction at the centre φ", "κ / κ Chapman-Enskog");
+        let figure = figure("heat_conductivity.svg", axes, (false, false), layers);
+        conductivity_figure = show(figures, figure, named(CAPTIONS, "conductivity"));
+    }
     fill(
         TEXT,
         &[
             ("pictures", pictures),
             ("rows", rows),
-            ("jumps_verdict", jumps_verdict),
+            ("jumps_verdict", fill(named(CAPTIONS, verdict), &verdict_values)),
             ("jumps", jumps),
             ("conductivity_figure", conductivity_figure),
         ],
@@ -146,92 +134,41 @@ pub fn part(
 }
 
 /// The mean temperature across the box with the fitted line extended to
-/// the walls, the walls' temperatures and the scaled density; the figure
-/// and its Markdown.
+/// the walls, the walls' temperatures and the scaled density; the figure's
+/// Markdown.
 fn profile_figure(
     k: usize,
     (gas, (hot, cold, hot_high), rs): &(Gas, (f64, f64, bool), Runs),
     width: f64,
-    pooled: &Profile,
-    t_mean: &[Stats],
-    line: &Line,
-) -> (Figure, String) {
+    profiles: &[Profile],
+    figures: &mut Vec<Figure>,
+) -> String {
     let (name, length) = (label(rs, gas), gas.size[0]);
-    let file = format!("heat_profile_{k}.svg");
+    let (t_mean, pooled) = mean_profile(profiles);
+    let line = Line::fit(&pooled, length, width);
     let text = "temperature (mean ± standard error)".into();
-    let mut layers = mean_with_band(&pooled.x, t_mean, colour(0), text).to_vec();
+    let mut layers = mean_with_band(&pooled.x, &t_mean, colour(0), text).to_vec();
     let ends = [gas.diameter / 2.0, length - gas.diameter / 2.0];
     let text = format!("straight line through the middle {}%", num(100.0 * width));
-    layers.push(dashed(
-        ends.iter().map(|&x| (x, line.at(x))).collect(),
-        colour(1),
-        text,
-    ));
-    let (x_hot, x_cold) = if *hot_high {
-        (length, 0.0)
-    } else {
-        (0.0, length)
+    layers.push(dashed(ends.map(|x| (x, line.at(x))).to_vec(), colour(1), text));
+    let walls = match hot_high {
+        true => [(length, *hot), (0.0, *cold)],
+        false => [(0.0, *hot), (length, *cold)],
     };
-    layers.push(Layer::Markers {
-        points: vec![(x_hot, *hot), (x_cold, *cold)],
-        paint: colour(3),
-        label: Some("wall temperatures".into()),
-    });
+    let text = Some("wall temperatures".into());
+    layers.push(markers(walls.to_vec(), colour(3), text));
     // Density on the same axis, scaled to the temperature's range.
     let n_max = pooled.density.iter().copied().fold(0.0, f64::max);
     if n_max > 0.0 {
         let scaled = pooled.x.iter().zip(&pooled.density);
-        layers.push(Layer::Line {
-            points: scaled.map(|(x, n)| (*x, n / n_max * hot)).collect(),
-            paint: colour(2),
-            width: 1,
-            dashed: false,
-            label: Some(format!(
-                "density × {} (its maximum at kT_hot)",
-                num(hot / n_max)
-            )),
-        });
+        let scaled = scaled.map(|(x, n)| (*x, n / n_max * hot)).collect();
+        let text = format!("density × {} (its maximum at kT_hot)", num(hot / n_max));
+        layers.push(polyline(scaled, colour(2), 1, false, Some(text)));
     }
-    let title = format!(
-        "Steady profile between walls at kT = {} and {}, {name}",
-        num(*hot),
-        num(*cold)
-    );
-    let text = format!(
-        "![{name}: temperature across the box (band: ±1 standard error over {} runs), the straight line fitted through its middle, extended to the walls (dashed: the gap to each wall's marker is the temperature jump), and the density profile, scaled.]({file})\n\n",
-        rs.outs.len()
-    );
+    let (hot, cold) = (num(*hot), num(*cold));
+    let title = format!("Steady profile between walls at kT = {hot} and {cold}, {name}");
     let axes = (title, "x [σ]", "kinetic temperature [kT]");
-    (figure(&file, axes, (false, false), layers), text)
-}
-
-/// κ over Chapman-Enskog's against the packing at the centre, beside
-/// Enskog's factor; the figure's Markdown.
-fn conductivity_chart(
-    dim: usize,
-    bars: Vec<(f64, f64, f64, f64)>,
-    figures: &mut Vec<Figure>,
-) -> String {
-    let top = bars.iter().map(|b| b.0).fold(0.0, f64::max) * 1.1;
-    let file = "heat_conductivity.svg";
-    let enskog = (0..=50)
-        .map(|i| top * i as f64 / 50.0)
-        .map(|p| (p, enskog_factor(dim, p)))
-        .collect();
-    let mut layers = vec![dashed(enskog, colour(1), "Enskog".into())];
-    layers.extend(measured(
-        bars,
-        colour(0),
-        "measured (mean ± standard error)",
-    ));
-    let title = "Thermal conductivity over the dilute (Chapman-Enskog) value".into();
-    let axes = (
-        title,
-        "packing fraction at the centre φ",
-        "κ / κ Chapman-Enskog",
-    );
-    figures.push(figure(file, axes, (false, false), layers));
-    format!(
-        "![The measured conductivity over Chapman-Enskog's at the centre's temperature, against the packing fraction there, beside Enskog's dense-gas factor (dashed).]({file})\n\n"
-    )
+    let figure = figure(&format!("heat_profile_{k}.svg"), axes, (false, false), layers);
+    let values = [("name", name), ("runs", rs.outs.len().to_string())];
+    show(figures, figure, &fill(named(CAPTIONS, "profile"), &values))
 }

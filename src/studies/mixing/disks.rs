@@ -12,6 +12,7 @@ use crate::model::descriptor::Descriptor;
 use crate::model::run_output::RunOutput;
 use crate::scene::Built;
 use crate::scene::velocities::maxwell_temperature;
+use crate::studies::curves::scalars;
 use crate::stats::diffusion::diffusion;
 use crate::stats::late::late_mean;
 use crate::stats::passage::first_passage;
@@ -30,9 +31,7 @@ pub fn per_run(
     species: &[String],
     out: &mut RunOutput,
 ) -> Result<(), String> {
-    let balls: Vec<_> = built
-        .particles
-        .iter()
+    let balls: Vec<_> = (built.particles.iter())
         .filter(|p| !p.is_immovable() && !p.is_plane())
         .collect();
     let n = balls.len();
@@ -55,16 +54,13 @@ pub fn per_run(
     let density = n as f64 / area;
     let sigma = balls.iter().map(|p| 2.0 * p.radius).sum::<f64>() / n as f64;
     let (ma, mb) = (mass(0), mass(1));
-    out.scalars.extend(
-        [
-            ("particles", n as f64),
-            ("packing_fraction", eta),
-            ("mass_ratio", mb / ma),
-            // Mean free path of the dilute gas over the box length along x.
-            ("knudsen", mean_free_path(2, density, sigma) / sizes[0]),
-        ]
-        .map(|(k, v)| (k.to_string(), v)),
-    );
+    out.scalars.extend(scalars([
+        ("particles", n as f64),
+        ("packing_fraction", eta),
+        ("mass_ratio", mb / ma),
+        // Mean free path of the dilute gas over the box length along x.
+        ("knudsen", mean_free_path(2, density, sigma) / sizes[0]),
+    ]));
     let get = |name: String| {
         out.series(&name)
             .cloned()
@@ -85,14 +81,11 @@ pub fn per_run(
             .collect();
         let tau = first_passage(&t, &own, 0.5);
         let a_fraction: Vec<f64> = a_left.value.iter().map(|a| a / na as f64).collect();
-        out.scalars.extend(
-            [
-                ("mixed", if tau.is_finite() { 1.0 } else { 0.0 }),
-                ("mixing_time", tau),
-                ("late_left_fraction", late_mean(&t, &a_fraction)),
-            ]
-            .map(|(k, v)| (k.to_string(), v)),
-        );
+        out.scalars.extend(scalars([
+            ("mixed", if tau.is_finite() { 1.0 } else { 0.0 }),
+            ("mixing_time", tau),
+            ("late_left_fraction", late_mean(&t, &a_fraction)),
+        ]));
     } else if axes.iter().all(|a| a.is_periodic()) {
         // A periodic box: the bulk fluid's self-diffusion, over both axes
         // and both species (count-weighted: with equal counts, Darken's
@@ -120,15 +113,12 @@ pub fn per_run(
         };
         // How many velocity memory times (D m / kT) in the fit starts.
         let memory = from / (dmix * 0.5 * (ma + mb) / kt);
-        out.scalars.extend(
-            [
-                ("diffusion", dmix),
-                ("diffusion_enskog", enskog),
-                ("diffusion_ratio", dmix / enskog),
-                ("memory_ratio", memory),
-            ]
-            .map(|(k, v)| (k.to_string(), v)),
-        );
+        out.scalars.extend(scalars([
+            ("diffusion", dmix),
+            ("diffusion_enskog", enskog),
+            ("diffusion_ratio", dmix / enskog),
+            ("memory_ratio", memory),
+        ]));
     }
     Ok(())
 }

@@ -5,6 +5,7 @@
 use crate::model::descriptor::Descriptor;
 use crate::model::run_output::RunOutput;
 use crate::scene::Built;
+use crate::studies::curves::scalars;
 use crate::stats::late::late_mean;
 use crate::stats::passage::first_passage;
 use crate::theory::mixing::equilibrium_concentration;
@@ -34,22 +35,12 @@ pub fn per_run(d: &Descriptor, built: &Built<1>, out: &mut RunOutput) -> Result<
                 .into(),
         );
     }
-    let moving: Vec<_> = built
-        .particles
-        .iter()
-        .filter(|p| !p.is_immovable())
-        .collect();
-    let n = moving.len();
+    let n = built.particles.iter().filter(|p| !p.is_immovable()).count();
     // The hot rod's mass over the lightest mass the gas may draw (1 in the
     // bundled study): a property of the point, not of the draw.
-    let lightest = crate::scene::resolve(&d.scene)
-        .map(|s| {
-            s.species
-                .iter()
-                .map(|k| k.mass.bounds()[0])
-                .fold(f64::INFINITY, f64::min)
-        })
-        .unwrap_or(f64::NAN);
+    let lightest = crate::scene::resolve(&d.scene).map_or(f64::NAN, |s| {
+        (s.species.iter().map(|k| k.mass.bounds()[0])).fold(f64::INFINITY, f64::min)
+    });
     let hot_mass = built.piston.map_or(f64::NAN, |i| built.particles[i].mass());
     let y = out
         .series("energy_concentration")
@@ -82,20 +73,17 @@ pub fn per_run(d: &Descriptor, built: &Built<1>, out: &mut RunOutput) -> Result<
             late_mean(&s.t, &s.value) / (count as f64 / n as f64)
         })
         .unwrap_or(f64::NAN);
-    out.scalars.extend(
-        [
-            ("particles", n as f64),
-            ("mass_spread", mass_spread(d)),
-            ("hot_mass_ratio", hot_mass / lightest),
-            ("mixed", if tau.is_finite() { 1.0 } else { 0.0 }),
-            ("mixing_time", tau),
-            ("mixing_collisions", tau * rate),
-            ("collision_rate", rate),
-            ("late_concentration_ratio", late_mean(&t, &v) / target),
-            ("concentration_change", change),
-            ("hot_share_ratio", hot),
-        ]
-        .map(|(k, v)| (k.to_string(), v)),
-    );
+    out.scalars.extend(scalars([
+        ("particles", n as f64),
+        ("mass_spread", mass_spread(d)),
+        ("hot_mass_ratio", hot_mass / lightest),
+        ("mixed", if tau.is_finite() { 1.0 } else { 0.0 }),
+        ("mixing_time", tau),
+        ("mixing_collisions", tau * rate),
+        ("collision_rate", rate),
+        ("late_concentration_ratio", late_mean(&t, &v) / target),
+        ("concentration_change", change),
+        ("hot_share_ratio", hot),
+    ]));
     Ok(())
 }

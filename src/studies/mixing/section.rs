@@ -10,24 +10,26 @@ use crate::stats::format::{num, pm};
 use crate::stats::point_runs::{PointRuns, by_point};
 
 const METHODS: &str = include_str!("methods.md");
+/// The findings' sentences, one per outcome, and the figures' captions.
+pub const SENTENCES: &str = include_str!("sentences.md");
 
 /// The runs of one sweep point or case.
 pub type Point<'a> = PointRuns<'a>;
 
 /// How many runs of a point mixed within their length.
 pub fn mixed(p: &Point) -> usize {
-    p.outs
-        .iter()
-        .filter(|o| o.scalar("mixed") == Some(1.0))
-        .count()
+    (p.outs.iter()).filter(|o| o.scalar("mixed") == Some(1.0)).count()
 }
 
 pub fn all_mixed(p: &Point) -> bool {
     mixed(p) == p.outs.len()
 }
 
-/// A point's name: `what` it is, and its case if it is one.
-pub fn named(p: &Point, what: String) -> String {
+/// A point's name: its values of the results named, each after its
+/// symbol, and its case if it is one.
+pub fn label(p: &Point, values: &[(&str, &str)]) -> String {
+    let values = values.iter().map(|(symbol, r)| format!("{symbol} = {}", num(p.first(r))));
+    let what = values.collect::<Vec<_>>().join(", ");
     match &p.spec.case {
         Some(c) => format!("{what} (case {c})"),
         None => what,
@@ -69,12 +71,8 @@ pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
         markdown.push_str(&section_disks::part(&disks, &mut figures));
     }
     markdown.push_str(METHODS);
-    Ok(ReportSection {
-        title: "Mixing time".into(),
-        markdown,
-        figures,
-        presents: super::RESULTS.iter().map(|r| r.to_string()).collect(),
-    })
+    let results = super::RESULTS;
+    Ok(crate::studies::curves::section("Mixing time", markdown, figures, results))
 }
 
 #[cfg(test)]
@@ -96,5 +94,14 @@ mod tests {
         let widest = ["spread", "heaviest", "times", "verdict"];
         assert_eq!(unfilled(section_rods::WIDEST), widest);
         assert_eq!(unfilled(section_disks::BULK), ["verdict", "rows"]);
+    }
+
+    /// Every outcome and figure the halves name has its sentence.
+    #[test]
+    fn every_sentence_is_there() {
+        let names: Vec<&str> = crate::stats::named::names(super::SENTENCES).collect();
+        let outcomes = ["censored", "many", "few", "agree", "above", "below"];
+        let captions = ["spread", "concentration", "sides", "density"];
+        assert_eq!(names, [&outcomes[..], &captions].concat());
     }
 }

@@ -3,8 +3,7 @@
 //! prediction, the mixing time against density and mass ratio, the
 //! measured self-diffusion coefficient against Enskog's.
 
-use super::section::{Point, all_mixed, distinct, mixed, tau_text};
-use super::section_rods::{SENTENCES, label_of};
+use super::section::{Point, SENTENCES, all_mixed, distinct, label, mixed, tau_text};
 use crate::model::chart::colour;
 use crate::model::report::Figure;
 use crate::stats::fill::fill;
@@ -12,20 +11,18 @@ use crate::stats::format::{count, num, pm};
 use crate::stats::named::named as sentence;
 use crate::stats::summary::z_score;
 use crate::stats::table::table_row;
-use crate::studies::curves::{bar, figure, mean_with_band, measured, polyline, show};
+use crate::studies::curves::{bar, figure, mean_with_band, measured, polyline, show, stat_pm};
 use crate::theory::mixing::{slowest_mode_time, step_excess, step_mixing_time};
 
 const TEXT: &str = include_str!("disks.md");
 pub(super) const BULK: &str = include_str!("bulk.md");
 
-fn label(p: &Point) -> String {
-    let values = [
-        ("N", "particles"),
-        ("η", "packing_fraction"),
-        ("m_B/m_A", "mass_ratio"),
-    ];
-    label_of(p, &values)
-}
+/// What names a 2D point: its size, packing fraction and mass ratio.
+const LABEL: [(&str, &str); 3] = [
+    ("N", "particles"),
+    ("η", "packing_fraction"),
+    ("m_B/m_A", "mass_ratio"),
+];
 
 /// The periodic-box point at the same packing fraction and mass ratio as
 /// a mixing point: its fluid's self-diffusion coefficient.
@@ -96,31 +93,27 @@ pub fn part(points: &[Point], figures: &mut Vec<Figure>) -> String {
         let (pred, pred_se) = predicted(p, points);
         let ratio = tau.mean / pred;
         let ratio_se = ratio * ((tau.stderr / tau.mean).powi(2) + (pred_se / pred).powi(2)).sqrt();
-        let late = p.stat("late_left_fraction");
+        let ratio = match k == n {
+            true => pm(ratio, ratio_se),
+            false => "—".into(),
+        };
         rows.push_str(&table_row(&[
-            label(p),
+            label(p, &LABEL),
             num(p.first("knudsen")),
             n.to_string(),
             format!("{k}/{n}"),
             tau_text(p),
             pm(pred, pred_se),
-            if k == n {
-                pm(ratio, ratio_se)
-            } else {
-                "—".into()
-            },
+            ratio,
             num(memory(p, points)),
-            pm(late.mean, late.stderr),
+            stat_pm(p, "late_left_fraction"),
             num(p.cpu()),
             count(p.collisions()),
         ]));
     }
-    let mut pictures = String::new();
-    for (i, p) in mixing.iter().enumerate() {
-        if let Some((figure, caption)) = sides(p, i, predicted(p, points).0) {
-            pictures.push_str(&show(figures, figure, &caption));
-        }
-    }
+    let pictures: String = (mixing.iter().enumerate())
+        .filter_map(|(i, p)| sides(p, i, predicted(p, points).0, figures))
+        .collect();
     fill(
         TEXT,
         &[
@@ -138,34 +131,29 @@ fn bulk_table(bulk_points: &[&Point]) -> String {
         return String::new();
     }
     let mut rows = String::new();
-    let (mut above, mut agree, mut below) = (Vec::new(), Vec::new(), Vec::new());
+    // The points where D agrees with Enskog's, exceeds it and falls below.
+    let mut at: [(&str, Vec<String>); 3] = ["agree", "above", "below"].map(|k| (k, Vec::new()));
     for p in bulk_points {
-        let s = |name: &str| {
-            let st = p.stat(name);
-            pm(st.mean, st.stderr)
-        };
         rows.push_str(&table_row(&[
-            label(p),
+            label(p, &LABEL),
             p.outs.len().to_string(),
-            s("diffusion"),
+            stat_pm(p, "diffusion"),
             num(p.first("diffusion_enskog")),
-            s("diffusion_ratio"),
+            stat_pm(p, "diffusion_ratio"),
             num(p.stat("memory_ratio").mean),
             num(p.cpu()),
             count(p.collisions()),
         ]));
         let (eta, ratio) = (p.first("packing_fraction"), p.first("mass_ratio"));
-        let at = format!("η = {} (m_B/m_A = {})", num(eta), num(ratio));
+        let point = format!("η = {} (m_B/m_A = {})", num(eta), num(ratio));
         match z_score(&p.stat("diffusion_ratio"), 1.0) {
-            Some(z) if z >= 4.0 => above.push(at),
-            Some(z) if z <= -4.0 => below.push(at),
-            Some(_) => agree.push(at),
+            Some(z) if z >= 4.0 => at[1].1.push(point),
+            Some(z) if z <= -4.0 => at[2].1.push(point),
+            Some(_) => at[0].1.push(point),
             None => {}
         }
     }
-    let verdict: Vec<String> = [("agree", agree), ("above", above), ("below", below)]
-        .into_iter()
-        .filter(|(_, at)| !at.is_empty())
+    let verdict: Vec<String> = (at.iter().filter(|(_, at)| !at.is_empty()))
         .map(|(name, at)| fill(sentence(SENTENCES, name), &[("at", at.join(", "))]))
         .collect();
     let verdict = match verdict.is_empty() {
@@ -176,90 +164,58 @@ fn bulk_table(bulk_points: &[&Point]) -> String {
 }
 
 /// Counts of each species on each side against time for one point, with the
-/// diffusive prediction for species A on the left.
-fn sides(p: &Point, index: usize, tau_d: f64) -> Option<(Figure, String)> {
+/// diffusive prediction for species A on the left; the figure's Markdown.
+fn sides(p: &Point, index: usize, tau_d: f64, figures: &mut Vec<Figure>) -> Option<String> {
     let scene = p.scene()?;
     let (a, b) = (&scene.species.first()?.name, &scene.species.get(1)?.name);
+    let curves = [(a, "left"), (a, "right"), (b, "left"), (b, "right")]
+        .map(|(species, side)| (species, side, p.mean_curve(&format!("count.{species}.{side}"))));
+    if curves.iter().any(|(_, _, (_, mean))| mean.is_empty()) {
+        return None;
+    }
     let mut layers = Vec::new();
-    let mut first = (Vec::new(), f64::NAN);
-    for (i, (species, side)) in [(a, "left"), (a, "right"), (b, "left"), (b, "right")]
-        .into_iter()
-        .enumerate()
-    {
-        let (t, mean) = p.mean_curve(&format!("count.{species}.{side}"));
-        if mean.is_empty() {
-            return None;
-        }
-        if i == 0 {
-            first = (t.clone(), mean[0].mean);
-        }
-        layers.extend(mean_with_band(
-            &t,
-            &mean,
-            colour(i),
-            format!("{species}, {side}"),
-        ));
+    for (i, (species, side, (t, mean))) in curves.iter().enumerate() {
+        layers.extend(mean_with_band(t, mean, colour(i), format!("{species}, {side}")));
     }
     if tau_d.is_finite() {
         // The slowest mode's time from the 1/e time of the step's series
         // (they are proportional).
         let slowest = tau_d / step_mixing_time(1.0);
-        let (times, total) = first;
-        let curve = times
-            .iter()
-            .map(|&t| (t, total * (0.5 + step_excess(t, slowest))));
+        let (times, total) = (&curves[0].2.0, curves[0].2.1[0].mean);
+        let curve = times.iter().map(|&t| (t, total * (0.5 + step_excess(t, slowest))));
         let label = Some("diffusion (A, left)".into());
         layers.push(polyline(curve.collect(), colour(6), 1, true, label));
     }
-    let caption = format!(
-        "{}: disks of each species in each half against time, ensemble mean ± standard error over {} runs; dashed: the diffusion equation with the bulk fluid's measured D.",
-        label(p),
-        p.outs.len()
-    );
-    let title = format!("Two species mixing, {}", label(p));
-    let axes = (title, "time t [σ √(m/kT)]", "disks in the half");
-    let file = format!("mixing_sides_{index}.svg");
-    Some((figure(&file, axes, (false, false), layers), caption))
+    let name = label(p, &LABEL);
+    let values = [("label", name.clone()), ("runs", p.outs.len().to_string())];
+    let caption = fill(sentence(SENTENCES, "sides"), &values);
+    let axes = (format!("Two species mixing, {name}"), "time t [σ √(m/kT)]", "disks in the half");
+    let figure = figure(&format!("mixing_sides_{index}.svg"), axes, (false, false), layers);
+    Some(show(figures, figure, &caption))
 }
 
 /// Mixing time against the packing fraction, per mass ratio: measured and
 /// predicted by diffusion from the measured D.
 fn against_density(mixing: &[&Point], all: &[Point], figures: &mut Vec<Figure>) -> String {
+    let eta = |p: &Point| p.first("packing_fraction");
     let mut layers = Vec::new();
-    for (i, &r) in distinct(mixing.iter().copied(), "mass_ratio")
-        .iter()
-        .enumerate()
-    {
-        let mut at: Vec<&Point> = mixing
-            .iter()
-            .copied()
+    for (i, &r) in distinct(mixing.iter().copied(), "mass_ratio").iter().enumerate() {
+        let mut at: Vec<&Point> = (mixing.iter().copied())
             .filter(|p| p.first("mass_ratio") == r && all_mixed(p))
             .collect();
-        at.sort_by(|a, b| {
-            a.first("packing_fraction")
-                .total_cmp(&b.first("packing_fraction"))
-        });
-        let eta = |p: &Point| p.first("packing_fraction");
+        at.sort_by(|a, b| eta(a).total_cmp(&eta(b)));
         let measured_at = at.iter().map(|p| bar(eta(p), &p.stat("mixing_time")));
+        let label = format!("measured, m_B/m_A = {}", num(r));
+        layers.extend(measured(measured_at, colour(i), &label));
         let diffusive = at.iter().map(|p| (eta(p), predicted(p, all).0)).collect();
-        layers.extend(measured(
-            measured_at,
-            colour(i),
-            &format!("measured, m_B/m_A = {}", num(r)),
-        ));
         let label = Some(format!("diffusion from D, m_B/m_A = {}", num(r)));
         layers.push(polyline(diffusive, colour(i), 1, true, label));
     }
-    let figure = figure(
-        "mixing_time_against_density.svg",
-        (
-            "2D mixing time against density".into(),
-            "packing fraction η",
-            "mixing time [σ √(m/kT)]",
-        ),
-        (false, true),
-        layers,
+    let labels = (
+        "2D mixing time against density".into(),
+        "packing fraction η",
+        "mixing time [σ √(m/kT)]",
     );
-    let caption = "Mixing time of the two species against the packing fraction, per mass ratio: measured (mean ± standard error; fully mixed points only) and the diffusion equation's from the measured self-diffusion coefficient (dashed).";
-    show(figures, figure, caption)
+    let figure = figure("mixing_time_against_density.svg", labels, (false, true), layers);
+    show(figures, figure, sentence(SENTENCES, "density"))
 }
