@@ -6,7 +6,9 @@ For each OUT/index.html, at a 1280 px wide window: no console errors or
 uncaught exceptions, no network request (the report is self-contained), nothing
 wider than the window (the page never scrolls sideways), every figure drawn
 (each <figure> holds an SVG with a non-empty box and marks in it), and
-every movie playing, its time slider seeking it. A screenshot of the top of each report goes
+every movie playing, its time slider seeking it; a contents list and the
+findings box on the first screen, no contrast theory flagged, no text drawn
+smaller than MIN_TEXT px (figures' text at their drawn scale). A screenshot of the top of each report goes
 to SCREENSHOT_DIR/<name of OUT>.png for a person to look at.
 
 Talks the DevTools protocol over a pipe (`--remote-debugging-pipe`: JSON
@@ -25,6 +27,8 @@ import sys
 import tempfile
 
 WIDTH, HEIGHT = 1280, 900
+# The smallest text a projector shows legibly at WIDTH, in CSS px.
+MIN_TEXT = 12
 LOCAL = ("file:", "data:", "about:")
 
 # Runs in the page once it has loaded; returns what the checks need.
@@ -60,7 +64,32 @@ PROBE = """(async () => {
       return 'movie ' + (i + 1) + ': the slider does not seek';
     return null;
   });
+  // The first screen: the findings box and the contents list start on it.
+  const top = selector => {
+    const e = document.querySelector(selector);
+    return e ? e.getBoundingClientRect().top + window.scrollY : null;
+  };
+  // A contrast theory is shown, never flagged.
+  const flagged = [...document.querySelectorAll('tr')]
+    .filter(r => r.textContent.includes('(contrast)') && r.textContent.includes('⚠')).length;
+  // Text as drawn, in CSS px: its computed size, and inside a figure
+  // times the figure's scale (drawn width over its own).
+  const small = [];
+  for (const e of document.querySelectorAll('body *')) {
+    if (![...e.childNodes].some(n => n.nodeType === 3 && n.textContent.trim())) continue;
+    let size = parseFloat(getComputedStyle(e).fontSize);
+    const svg = e.closest('svg');
+    if (svg) {
+      const own = svg.viewBox.baseVal && svg.viewBox.baseVal.width || svg.width.baseVal.value;
+      size *= svg.getBoundingClientRect().width / own;
+    }
+    if (size < MIN_TEXT) small.push(e.textContent.trim().slice(0, 40) + ' (' + size.toFixed(1) + ' px)');
+  }
   return {
+    contentsTop: top('#contents'),
+    findingsTop: top('section.findings'),
+    flagged,
+    small,
     scrollWidth: document.documentElement.scrollWidth,
     width,
     wide,
@@ -68,7 +97,7 @@ PROBE = """(async () => {
     movies: movies.length,
     films: films.filter(f => f),
   };
-})()"""
+})()""".replace("MIN_TEXT", str(MIN_TEXT))
 
 
 class Browser:
@@ -194,6 +223,15 @@ def check(browser, page, screenshot):
     if probe["scrollWidth"] > probe["width"]:
         problems.append(f"page is {probe['scrollWidth']} px wide in a {probe['width']} px window: "
                         + "; ".join(probe["wide"]))
+    for part in ("contents", "findings"):
+        at = probe[part + "Top"]
+        if at is None or at > HEIGHT:
+            problems.append(f"no {part} on the first screen ({at} px from the top)")
+    if probe["flagged"]:
+        problems.append(f"{probe['flagged']} contrast row(s) flagged ⚠")
+    if probe["small"]:
+        problems.append(f"{len(probe['small'])} text(s) under {MIN_TEXT} px, e.g. "
+                        + "; ".join(probe["small"][:6]))
     if not probe["figures"]:
         problems.append("no figures")
     problems += probe["films"]

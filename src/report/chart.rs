@@ -11,6 +11,10 @@ pub const WIDTH: u32 = 860;
 pub const HEIGHT: u32 = 520;
 /// Longest polyline drawn; longer series are thinned so SVGs stay small.
 const MAX_POINTS: usize = 1500;
+/// Tick and legend text, in plotters' units: it writes a font size of
+/// this over 1.24, so 15 is drawn 12.1 px high at the chart's own width,
+/// legible on a projector.
+const LABEL: u32 = 15;
 
 pub use crate::model::chart::{ChartSpec, Layer, Paint};
 
@@ -129,7 +133,7 @@ where
             .x_desc(spec.x_label.as_str())
             .y_desc(spec.y_label.as_str())
             .axis_desc_style(("sans-serif", 16))
-            .label_style(("sans-serif", 13))
+            .label_style(("sans-serif", LABEL))
             .x_labels(10)
             .y_labels(8)
             .max_light_lines(1)
@@ -149,7 +153,7 @@ where
                 .position(legend)
                 .background_style(WHITE.mix(0.85))
                 .border_style(RGBColor(180, 180, 180))
-                .label_font(("sans-serif", 13))
+                .label_font(("sans-serif", LABEL))
                 .draw()
                 .map_err(plot_err)?;
         }

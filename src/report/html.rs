@@ -4,7 +4,11 @@
 //! SVG files in the out dir are inlined, so the page opens offline with no
 //! external fetches of any kind.
 
+use super::contents::{Anchors, heading};
 use std::path::Path;
+
+/// A table longer than this many rows is folded, with a filter for its rows.
+const LONG: usize = 30;
 
 const STYLE: &str = "body{font-family:system-ui,sans-serif;max-width:72rem;margin:2rem auto;\
 padding:0 1rem;color:#222;line-height:1.45;overflow-wrap:break-word}\
@@ -16,7 +20,21 @@ pre{background:#f4f4f4;padding:.6rem;overflow-x:auto}\
 blockquote{margin:1rem 0;padding:0 1rem;border-left:4px solid #ccc;color:#444}\
 figure{margin:1.2rem 0}figure svg{max-width:100%;height:auto}\
 figcaption{color:#555;font-size:.9rem}\
-.player{display:flex;gap:.6rem;align-items:center;max-width:720px}.player input{flex:1}h1,h2{border-bottom:1px solid #ddd}";
+.player{display:flex;gap:.6rem;align-items:center;max-width:720px}.player input{flex:1}h1,h2{border-bottom:1px solid #ddd}\
+.findings{border:2px solid #5a8f6a;border-radius:6px;background:#f5faf6;padding:0 1rem;margin:1rem 0}\
+.findings h2{border:none}summary{cursor:pointer}summary>h2,summary>h3{display:inline}\
+details.long>summary{color:#2a5d8f}input.filter{display:block;margin:.5rem 0;width:20rem;max-width:100%}";
+
+/// A row filter for each folded long table, on pages that have one.
+const FILTER: &str = "<script>\n\
+document.querySelectorAll('input.filter').forEach(input => {\n\
+  const rows = [...input.parentElement.querySelectorAll('tbody tr')];\n\
+  input.oninput = () => {\n\
+    const q = input.value.toLowerCase();\n\
+    rows.forEach(r => { r.hidden = q !== '' && !r.textContent.toLowerCase().includes(q); });\n\
+  };\n\
+});\n\
+</script>\n";
 
 /// Under each movie (an animated SVG of class `movie`): a pause button, a
 /// time slider and the simulated time. Only pages with a movie carry it.
@@ -53,11 +71,9 @@ document.querySelectorAll('svg.movie').forEach(svg => {\n\
 /// The whole page for `markdown`; figures are read from `out_dir`.
 pub fn page(title: &str, markdown: &str, out_dir: &Path) -> String {
     let body = body(markdown, out_dir);
-    let player = if body.contains("<svg class=\"movie\"") {
-        PLAYER
-    } else {
-        ""
-    };
+    let used = |script, mark| if body.contains(mark) { script } else { "" };
+    let player =
+        used(PLAYER, "<svg class=\"movie\"").to_string() + used(FILTER, "class=\"filter\"");
     format!(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
@@ -68,6 +84,11 @@ pub fn page(title: &str, markdown: &str, out_dir: &Path) -> String {
 
 /// Block-level rendering, line by line.
 pub fn body(markdown: &str, out_dir: &Path) -> String {
+    blocks(markdown, out_dir, &mut Anchors::default())
+}
+
+/// `body`, its headings given the next of `anchors`.
+fn blocks(markdown: &str, out_dir: &Path, anchors: &mut Anchors) -> String {
     let lines: Vec<&str> = markdown.lines().collect();
     let mut html = String::new();
     let mut para: Vec<&str> = Vec::new();
@@ -99,13 +120,45 @@ pub fn body(markdown: &str, out_dir: &Path) -> String {
             html.push_str("</code></pre>\n");
             i = end + 1;
         } else if let Some((level, text)) = heading(t) {
-            html.push_str(&format!("<h{level}>{}</h{level}>\n", inline(text)));
-            i += 1;
+            let id = escape(&anchors.next(text));
+            let h = format!("<h{level} id=\"{id}\">{}</h{level}>\n", inline(text));
+            // Methods ("How ...") fold under their heading; the findings
+            // stand in a box. Each takes its part up to the next heading of
+            // its level or above.
+            let fold = text.starts_with("How ");
+            if fold || (level == 2 && text == "Findings") {
+                let end = (i + 1..lines.len())
+                    .find(|&j| heading(lines[j]).is_some_and(|(l, _)| l <= level))
+                    .unwrap_or(lines.len());
+                let inner = blocks(&lines[i + 1..end].join("\n"), out_dir, anchors);
+                html += &if fold {
+                    format!(
+                        "<details class=\"methods\"><summary>{h}</summary>\n{inner}</details>\n"
+                    )
+                } else {
+                    format!("<section class=\"findings\">\n{h}{inner}</section>\n")
+                };
+                i = end;
+            } else {
+                html += &h;
+                i += 1;
+            }
         } else if t.starts_with('|') {
             let end = (i..lines.len())
                 .find(|&j| !lines[j].trim().starts_with('|'))
                 .unwrap_or(lines.len());
-            html.push_str(&table(&lines[i..end]));
+            let rows = end - i;
+            let table = table(&lines[i..end]);
+            html += &if rows > LONG + 2 {
+                format!(
+                    "<details class=\"long\"><summary>Show the table ({} rows)</summary>\n\
+                     <input type=\"search\" class=\"filter\" placeholder=\"Show only rows containing…\" \
+                     aria-label=\"Show only rows containing\">\n{table}</details>\n",
+                    rows - 2
+                )
+            } else {
+                table
+            };
             i = end;
         } else if quoted(t).is_some() {
             // The seeds' own words: a quote, its lines rendered as a body.
@@ -117,7 +170,7 @@ pub fn body(markdown: &str, out_dir: &Path) -> String {
                 .map(|l| quoted(l.trim()).unwrap_or(""))
                 .collect();
             html.push_str("<blockquote>\n");
-            html.push_str(&body(&inner.join("\n"), out_dir));
+            html.push_str(&blocks(&inner.join("\n"), out_dir, anchors));
             html.push_str("</blockquote>\n");
             i = end;
         } else if let Some((ordered, _)) = list_item(t) {
@@ -155,12 +208,6 @@ fn flush(html: &mut String, para: &mut Vec<&str>) {
 fn quoted(t: &str) -> Option<&str> {
     t.strip_prefix('>')
         .map(|rest| rest.strip_prefix(' ').unwrap_or(rest))
-}
-
-fn heading(t: &str) -> Option<(usize, &str)> {
-    let level = t.chars().take_while(|&c| c == '#').count();
-    let rest = t.get(level..)?;
-    ((1..=6).contains(&level) && rest.starts_with(' ')).then(|| (level, rest.trim()))
 }
 
 /// (ordered, text) for "- x", "* x" or "12. x".

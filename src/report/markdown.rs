@@ -3,6 +3,8 @@
 //! `html.rs` renders this same text, so the two never disagree.
 
 use super::ReportMeta;
+use super::contents::contents;
+use super::findings::findings;
 use super::plots::{Figure, Points, point_label, value_text};
 use crate::model::descriptor::{Descriptor, SweepValues};
 use crate::model::report::ReportSection;
@@ -30,9 +32,18 @@ pub struct Inputs<'a> {
     pub points: &'a Points,
 }
 
+/// The header and the findings on the first screen, the contents list
+/// under them, then the rest.
 pub fn render(inp: &Inputs) -> String {
+    let mut top = String::new();
+    header(&mut top, inp);
+    top += &findings(inp);
+    let rest = rest(inp);
+    top.clone() + &contents(&top, &rest) + &rest
+}
+
+fn rest(inp: &Inputs) -> String {
     let mut md = String::new();
-    header(&mut md, inp);
     what_was_run(&mut md, inp);
     energy_drift(&mut md, inp.runs);
     // The study's own sections first: they answer its questions.
@@ -65,10 +76,11 @@ fn header(md: &mut String, inp: &Inputs) {
     let m = inp.meta;
     let _ = writeln!(
         md,
-        "Made by {} (bonkers {}) on {} threads, from {} to {}; wall time {} s.\n",
+        "Made by {} (bonkers {}) on {} thread{}, from {} to {}; wall time {} s.\n",
         code(&m.command.replace('`', "'")),
         m.version,
         m.threads,
+        if m.threads == 1 { "" } else { "s" },
         m.started,
         m.finished,
         num(m.total_wall_seconds)
@@ -217,16 +229,18 @@ fn theory_table(md: &mut String, inp: &Inputs) {
         return;
     }
     let runs_per_point = runs_per_point(inp.runs);
-    let flagged = compared
-        .iter()
-        .filter(|r| r.z.is_some_and(|z| z.abs() > Z_FLAG))
+    let contrast = |r: &SummaryRow| contrast(inp, r);
+    let flagged = (compared.iter())
+        .filter(|r| !contrast(r) && r.z.is_some_and(|z| z.abs() > Z_FLAG))
         .count();
     let _ = writeln!(
         md,
         "The results with a theory to compare with; every result of every point is in \
          `summary.parquet`. Mean ± standard error over replicas; the 95% interval uses \
          Student's t. z = (mean − theory) / stderr; rows with |z| > {Z_FLAG} are marked ⚠ \
-         ({flagged} of {}). n counts runs that measured the result (NaN results are left out).\n",
+         ({flagged} of {}), except a *contrast*: a theory set beside the measurement to show \
+         where it stops holding. n counts runs that measured the result (NaN results are left \
+         out).\n",
         compared.len()
     );
     md.push_str("| point | parameters | result | n | mean ± stderr | 95% CI | theory | z |\n");
@@ -244,6 +258,7 @@ fn theory_table(md: &mut String, inp: &Inputs) {
             "—".into()
         };
         let z = match (r.z, r.theory) {
+            (Some(z), _) if contrast(r) => format!("{z:.2} (contrast)"),
             (Some(z), _) if z.abs() > Z_FLAG => format!("**{z:.2}** ⚠"),
             (Some(z), _) => format!("{z:.2}"),
             (None, Some(_)) if r.n >= 2 && r.stderr == 0.0 => "— (no spread)".into(),
@@ -387,6 +402,12 @@ fn footer(md: &mut String, runs: &[(RunSpec, RunOutput)]) {
     );
 }
 
+/// Whether a row's theory is a contrast at its point (`Study::contrast`).
+pub(super) fn contrast(inp: &Inputs, row: &SummaryRow) -> bool {
+    let run = inp.runs.iter().find(|(s, _)| s.point_id == row.point_id);
+    run.is_some_and(|(s, _)| crate::studies::contrast(&s.descriptor, &row.result))
+}
+
 fn runs_per_point(runs: &[(RunSpec, RunOutput)]) -> BTreeMap<u64, usize> {
     let mut m = BTreeMap::new();
     for (s, _) in runs {
@@ -395,7 +416,7 @@ fn runs_per_point(runs: &[(RunSpec, RunOutput)]) -> BTreeMap<u64, usize> {
     m
 }
 
-fn params_text(points: &Points, id: u64) -> String {
+pub(super) fn params_text(points: &Points, id: u64) -> String {
     points.get(&id).map_or(String::new(), |p| point_label(p))
 }
 

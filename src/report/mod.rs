@@ -4,6 +4,8 @@
 //! renders that same text with the SVGs inlined, so the two never disagree.
 
 pub mod chart;
+pub mod contents;
+mod findings;
 pub mod html;
 pub mod labels;
 pub mod markdown;

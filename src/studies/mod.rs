@@ -105,6 +105,12 @@ pub trait Study: Sync {
     fn theory(&self, _d: &Descriptor, _result: &str) -> Option<f64> {
         None
     }
+    /// Results whose theory is a contrast: set beside the measurement to
+    /// show where it stops holding (a limit, a law the gas does not obey),
+    /// not one the runs must agree with. The report does not flag them.
+    fn contrast(&self, _d: &Descriptor, _result: &str) -> bool {
+        false
+    }
     /// The error model of its headline result at a descriptor (sweep
     /// values applied), where it has one (`stats::error_model`).
     fn error_model(&self, _d: &Descriptor) -> Option<ErrorModel> {
@@ -178,6 +184,11 @@ pub fn theory(d: &Descriptor, result: &str) -> Option<f64> {
     named(d)
         .filter(|s| s.results().contains(&result))
         .find_map(|s| s.theory(d, result))
+}
+
+/// Whether the named study that gives `result` sets its theory as a contrast.
+pub fn contrast(d: &Descriptor, result: &str) -> bool {
+    named(d).any(|s| s.results().contains(&result) && s.contrast(d, result))
 }
 
 /// The error models of the named studies at a descriptor, by study name.

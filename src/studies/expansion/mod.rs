@@ -136,6 +136,12 @@ impl Study for Expansion {
             _ => None,
         }
     }
+    /// The collisionless time, which colliding gases are meant to miss
+    /// (exact for point particles).
+    fn contrast(&self, d: &Descriptor, result: &str) -> bool {
+        let colliding = Gas::of_descriptor(d).is_some_and(|g| g.diameter > 0.0);
+        result.starts_with("relaxation_") && colliding
+    }
     fn error_model(&self, d: &Descriptor) -> Option<super::ErrorModel> {
         error::error_model(d)
     }

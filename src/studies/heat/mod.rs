@@ -175,6 +175,11 @@ impl Study for Heat {
             _ => None,
         }
     }
+    /// The well-mixed model, which the dilute and dense ends are meant to
+    /// miss (for point particles the theory is the exact collisionless one).
+    fn contrast(&self, d: &Descriptor, result: &str) -> bool {
+        result == "relaxation_time" && Gas::of(d).is_ok_and(|g| g.diameter > 0.0)
+    }
     fn section(&self, d: &Descriptor, runs: &Runs) -> anyhow::Result<ReportSection> {
         section::section(d, runs)
     }
