@@ -60,7 +60,10 @@ fn group(p: &PointRuns) -> Group {
         dt: run.dt.unwrap_or(f64::NAN),
         duration: run.duration.unwrap_or(f64::NAN),
         // A run with a piston records its frequency (NaN if unmeasured).
-        piston: p.outs.iter().any(|o| o.scalar("piston_frequency").is_some()),
+        piston: p
+            .outs
+            .iter()
+            .any(|o| o.scalar("piston_frequency").is_some()),
         runs: p.outs.len(),
         pressure: p.stat("beta_pressure"),
         collision_rate: p.stat("collision_rate"),

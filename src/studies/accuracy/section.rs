@@ -33,7 +33,10 @@ fn finding(name: &str, values: &[(&str, String)]) -> String {
 /// and the rule under it.
 pub fn head(name: &str, values: &[(&str, String)]) -> String {
     let row = fill(named(TABLES, name), values);
-    format!("{row}\n|{}\n", "---|".repeat(row.matches(" | ").count() + 1))
+    format!(
+        "{row}\n|{}\n",
+        "---|".repeat(row.matches(" | ").count() + 1)
+    )
 }
 
 pub fn section(runs: &Runs) -> ReportSection {
@@ -280,7 +283,11 @@ fn cost_chart(all: &[Group], scenes: &[String]) -> Figure {
             layers.push(replicas_line(reference.cpu, s, 20, paint, label));
         }
     }
-    let labels = ("Error against CPU time".into(), "CPU seconds of one run", "relative error");
+    let labels = (
+        "Error against CPU time".into(),
+        "CPU seconds of one run",
+        "relative error",
+    );
     figure("accuracy_cost.svg", labels, (true, true), layers)
 }
 
@@ -312,7 +319,9 @@ fn table(scene: &str, all: &[Group]) -> String {
     });
     let err = |a: &Stats, b: Option<&Stats>| {
         let e = b.and_then(|b| error(a, b));
-        e.map_or("–".into(), |(e, se)| format!("{} %", pm(100.0 * e, 100.0 * se)))
+        e.map_or("–".into(), |(e, se)| {
+            format!("{} %", pm(100.0 * e, 100.0 * se))
+        })
     };
     let stat = |s: &Stats| match s.n {
         0 => "–".into(),

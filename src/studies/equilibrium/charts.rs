@@ -38,10 +38,18 @@ fn pooled(runs: &Runs, name: Name, scale: &dyn Fn(usize) -> (f64, f64)) -> Optio
         let (shift, unit) = scale(r);
         let bins = h.lo.iter().zip(&h.hi);
         if x.is_empty() {
-            x = bins.clone().map(|(a, b)| (0.5 * (a + b) - shift) / unit).collect();
+            x = bins
+                .clone()
+                .map(|(a, b)| (0.5 * (a + b) - shift) / unit)
+                .collect();
         }
         let f = fractions(&h.count);
-        per.push(f.iter().zip(bins).map(|(f, (a, b))| f / ((b - a) / unit)).collect());
+        per.push(
+            f.iter()
+                .zip(bins)
+                .map(|(f, (a, b))| f / ((b - a) / unit))
+                .collect(),
+        );
     }
     let at = |b: usize| Stats::of(&per.iter().map(|p| p[b]).collect::<Vec<f64>>());
     Some(x.into_iter().enumerate().map(|(b, x)| (x, at(b))).collect())
@@ -73,7 +81,10 @@ fn gaussian(span: (f64, f64)) -> Layer {
 /// From the first bin's low edge to the last's high one (equal widths).
 fn range(p: &Pooled) -> (f64, f64) {
     let w = p.get(1).zip(p.first()).map_or(0.0, |(b, a)| b.0 - a.0);
-    let (first, last) = (p.first().map_or(0.0, |f| f.0), p.last().map_or(1.0, |l| l.0));
+    let (first, last) = (
+        p.first().map_or(0.0, |f| f.0),
+        p.last().map_or(1.0, |l| l.0),
+    );
     (first - 0.5 * w, last + 0.5 * w)
 }
 
@@ -215,7 +226,10 @@ fn mean_over(
     per: &dyn Fn(&Histogram) -> Vec<f64>,
     reach: f64,
 ) -> Option<(Vec<(f64, f64)>, usize)> {
-    let hists: Vec<&Histogram> = runs.iter().filter_map(|(_, o)| histogram(o, name)).collect();
+    let hists: Vec<&Histogram> = runs
+        .iter()
+        .filter_map(|(_, o)| histogram(o, name))
+        .collect();
     let first = hists.first()?;
     let per: Vec<Vec<f64>> = hists.iter().map(|h| per(h)).collect();
     let mean = |b: usize| per.iter().map(|p| p[b]).sum::<f64>() / per.len() as f64;
@@ -231,19 +245,32 @@ fn linear(x_label: &str, y_label: &str, layers: Vec<Layer>) -> ChartSpec {
 
 /// MacKay's scatter plots, from the first replica's stored samples: each
 /// (x series, y series, label) a set of markers.
-pub fn scatter(runs: &Runs, sets: &[(String, String, String)], axes: (&str, &str)) -> Option<ChartSpec> {
+pub fn scatter(
+    runs: &Runs,
+    sets: &[(String, String, String)],
+    axes: (&str, &str),
+) -> Option<ChartSpec> {
     let out = runs.first()?.1;
     let layers = sets.iter().enumerate().map(|(k, (x, y, label))| {
         let (x, y) = (out.series(x)?, out.series(y)?);
         let points = x.value.iter().copied().zip(y.value.iter().copied());
-        Some(markers(points.collect(), colour(k).faded(0.5), Some(label.clone())))
+        Some(markers(
+            points.collect(),
+            colour(k).faded(0.5),
+            Some(label.clone()),
+        ))
     });
     Some(linear(axes.0, axes.1, layers.collect::<Option<_>>()?))
 }
 
 /// A series' mean over replicas with a ±1 standard error band, and a
 /// reference level.
-pub fn settling(t: &[f64], mean: &[Stats], y_label: &str, reference: Option<(f64, &str)>) -> ChartSpec {
+pub fn settling(
+    t: &[f64],
+    mean: &[Stats],
+    y_label: &str,
+    reference: Option<(f64, &str)>,
+) -> ChartSpec {
     let label = "mean over replicas (band: ± standard error)".to_string();
     let mut layers = mean_with_band(t, mean, colour(0), label).to_vec();
     if let (Some((level, label)), Some(t0), Some(t1)) = (reference, t.first(), t.last()) {

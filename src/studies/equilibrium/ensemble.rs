@@ -109,7 +109,12 @@ impl Ensemble {
     /// The exact law of sqrt(m)|v - V| of a ball of mass m.
     pub fn speed_law(&self, mass: f64) -> SpeedMarginal {
         let conserved = self.conserved.iter().any(|c| *c);
-        let share = 1.0 - if conserved { mass / self.total_mass } else { 0.0 };
+        let share = 1.0
+            - if conserved {
+                mass / self.total_mass
+            } else {
+                0.0
+            };
         SpeedMarginal {
             scale: 2.0 * self.internal_energy() * share,
             dimension: self.dimension as f64,

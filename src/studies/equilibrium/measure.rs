@@ -19,7 +19,10 @@ pub fn measure(e: &Ensemble, ctx: &Context, out: &mut RunOutput) {
     // The lightest and the heaviest ball, each with its Gaussian fit.
     let fit = |b: Option<&Ball>| {
         let b = *b?;
-        Some((b, moments::of(histogram(out, &format!("velocity_x.{}", b.index))?)))
+        Some((
+            b,
+            moments::of(histogram(out, &format!("velocity_x.{}", b.index))?),
+        ))
     };
     let by_mass = e.by_mass();
     if let (Some((light, l)), Some((heavy, h))) = (fit(by_mass.first()), fit(by_mass.last())) {

@@ -96,7 +96,9 @@ fn verdict(a: &Option<Agreement>) -> &'static str {
 pub fn section(runs: &AllRuns) -> anyhow::Result<ReportSection> {
     let mut p = Parts::default();
     for point in by_point(runs) {
-        let specs = runs.iter().filter(|(s, _)| s.point_id == point.spec.point_id);
+        let specs = runs
+            .iter()
+            .filter(|(s, _)| s.point_id == point.spec.point_id);
         let ensembles: Option<Vec<_>> = specs.map(|(s, _)| Ensemble::of_run(s)).collect();
         let Some(ensembles) = ensembles else { continue };
         let (e, case) = (&ensembles[0], &point.spec.case);
@@ -200,15 +202,28 @@ impl Parts {
         let axes = ("x of the left one [σ]", "x of the right one [σ]");
         self.figure(g, "scatter_x", charts::scatter(view, &sets, axes), &[]);
         let sets = [(v(0), v(1), "(v₁, v₂)".into())];
-        self.figure(g, "scatter_v", charts::scatter(view, &sets, ("v₁", "v₂")), &[]);
+        self.figure(
+            g,
+            "scatter_v",
+            charts::scatter(view, &sets, ("v₁", "v₂")),
+            &[],
+        );
         let sets = [(x(0), v(0), "(x₁, v₁)".into())];
         let chart = charts::scatter(view, &sets, ("x₁ [σ]", "v₁"));
         self.figure(g, "scatter_xv", chart, &[]);
         self.dimples(g, t);
-        let first = t.particles.iter().find(|p| p.rank == 0 && p.halves.is_some());
+        let first = t
+            .particles
+            .iter()
+            .find(|p| p.rank == 0 && p.halves.is_some());
         let Some(p) = first else { return };
         let halves = [("_early", "first half"), ("_late", "second half")];
-        self.figure(g, "dimple", charts::velocity(view, &|e| e.ball(p.index), &halves), &[]);
+        self.figure(
+            g,
+            "dimple",
+            charts::velocity(view, &|e| e.ball(p.index), &halves),
+            &[],
+        );
         self.dimple += &dimple_text(&g.label, p, view[0].0);
     }
 
@@ -218,7 +233,12 @@ impl Parts {
         let worst = |f| dash(zs(f).map(|a| a.z).fold(f64::NAN, f64::max));
         let least = |f| dash(zs(f).map(|a| a.z).fold(f64::NAN, f64::min));
         let (ratio, kurt) = (g.runs.stat("std_ratio"), g.runs.stat("kurtosis_lightest"));
-        let means = ["lightest_mass", "heaviest_mass", "sqrt_mass_ratio", "std_ratio_exact"];
+        let means = [
+            "lightest_mass",
+            "heaviest_mass",
+            "sqrt_mass_ratio",
+            "std_ratio_exact",
+        ];
         let [light, heavy, root, exact] = means.map(|n| num(g.runs.stat(n).mean));
         let row = [
             g.label.clone(),
@@ -229,12 +249,20 @@ impl Parts {
             pm(ratio.mean, ratio.stderr),
             root,
             exact,
-            format!("{} ({})", pm(kurt.mean, kurt.stderr), num(-6.0 / (e.dof + 2.0))),
+            format!(
+                "{} ({})",
+                pm(kurt.mean, kurt.stderr),
+                num(-6.0 / (e.dof + 2.0))
+            ),
             worst(|p| p.exact),
             least(|p| p.gaussian),
             z_text(&t.positions),
             worst(|p| p.halves),
-            format!("{} s, {} collisions", num(g.runs.cpu()), count(g.runs.collisions())),
+            format!(
+                "{} s, {} collisions",
+                num(g.runs.cpu()),
+                count(g.runs.collisions())
+            ),
         ];
         self.rods += &table_row(&row);
         let tested = |p: &Particle| p.exact.is_some() || p.gaussian.is_some() || p.halves.is_some();
@@ -251,8 +279,15 @@ impl Parts {
         self.per_particle += "| rank | mass | z exact | z Gaussian | z halves |\n";
         self.per_particle += "|---|---|---|---|---|\n";
         for p in &t.particles {
-            let z = [p.exact, p.gaussian, p.halves].map(|a| z_text(&a)).join(" | ");
-            let _ = writeln!(self.per_particle, "| {} | {} | {z} |", p.rank + 1, num(p.mass));
+            let z = [p.exact, p.gaussian, p.halves]
+                .map(|a| z_text(&a))
+                .join(" | ");
+            let _ = writeln!(
+                self.per_particle,
+                "| {} | {} | {z} |",
+                p.rank + 1,
+                num(p.mass)
+            );
         }
         self.per_particle.push('\n');
     }
@@ -337,7 +372,15 @@ impl Parts {
             num(e.kt()),
         ];
         row.extend([t.vx_exact, t.vx_gaussian, t.speed_exact, t.speed_mb].map(|a| z_text(&a)));
-        row.extend(["g_contact", "Z_contact", "Z_virial", "contact_theorem_ratio"].map(s));
+        row.extend(
+            [
+                "g_contact",
+                "Z_contact",
+                "Z_virial",
+                "contact_theorem_ratio",
+            ]
+            .map(s),
+        );
         row.push(format!("{} s", num(g.runs.cpu())));
         self.fluid += &table_row(&row);
         self.figure(g, "vx", charts::scaled_vx(&g.view), &[]);
@@ -378,7 +421,11 @@ impl Dimples {
 /// Particle 1's tests, and what its exact law looks like.
 fn dimple_text(label: &str, p: &Particle, e: &Ensemble) -> String {
     let rejected = verdict(&p.gaussian) == "rejected";
-    let limit = if rejected { "gaussian_rejected" } else { "gaussian_fits" };
+    let limit = if rejected {
+        "gaussian_rejected"
+    } else {
+        "gaussian_fits"
+    };
     let mut values = vec![
         ("label", label.to_string()),
         ("mass", num(p.mass)),
@@ -389,9 +436,16 @@ fn dimple_text(label: &str, p: &Particle, e: &Ensemble) -> String {
         ("kurtosis", num(-6.0 / (e.dof + 2.0))),
         ("reject", num(REJECT)),
     ];
-    let tests = [("exact", p.exact), ("gaussian", p.gaussian), ("halves", p.halves)];
+    let tests = [
+        ("exact", p.exact),
+        ("gaussian", p.gaussian),
+        ("halves", p.halves),
+    ];
     for ((name, a), z) in tests.into_iter().zip(["z_exact", "z_gaussian", "z_halves"]) {
-        values.extend([(name, verdict(&a).into()), (z, a.map_or("–".into(), |a| num(a.z)))]);
+        values.extend([
+            (name, verdict(&a).into()),
+            (z, a.map_or("–".into(), |a| num(a.z))),
+        ]);
     }
     let finding = fill(named(FINDINGS, verdict(&p.exact)), &values);
     values.push(("finding", finding));

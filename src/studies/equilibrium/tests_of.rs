@@ -88,7 +88,9 @@ pub fn tests_of(runs: &Runs) -> Tests {
     let (vx, speed): (Name, Name) = (&|_| "scaled_velocity_x".into(), &|_| "scaled_speed".into());
     let ranked = first.by_rank().into_iter().enumerate();
     Tests {
-        particles: ranked.filter_map(|(rank, b)| particle(runs, rank, b.index)).collect(),
+        particles: ranked
+            .filter_map(|(rank, b)| particle(runs, rank, b.index))
+            .collect(),
         positions: positions(runs),
         vx_exact: test(runs, vx, &|r, a, b| {
             mixture(r, &|e, m| {
@@ -124,7 +126,9 @@ fn particle(runs: &Runs, rank: usize, i: usize) -> Option<Particle> {
         normal_cdf(b, centre, std) - normal_cdf(a, centre, std)
     };
     let half = |out: &RunOutput, half: &str| {
-        Some(fractions(&find(out, &format!("velocity_x_{half}.{i}"))?.count))
+        Some(fractions(
+            &find(out, &format!("velocity_x_{half}.{i}"))?.count,
+        ))
     };
     let differences: Option<Vec<Vec<f64>>> = (runs.iter())
         .map(|(_, out)| {
@@ -133,7 +137,9 @@ fn particle(runs: &Runs, rank: usize, i: usize) -> Option<Particle> {
         })
         .collect();
     let early = deviations(runs, &|_| format!("velocity_x_early.{i}"), &exact);
-    let halves = early.zip(differences).and_then(|((_, keep), d)| zero_mean(&d, &keep));
+    let halves = early
+        .zip(differences)
+        .and_then(|((_, keep), d)| zero_mean(&d, &keep));
     let name = |_: usize| format!("velocity_x.{i}");
     let seen = find(runs[0].1, &name(0)).is_some() || halves.is_some();
     seen.then(|| Particle {

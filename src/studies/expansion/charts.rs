@@ -60,7 +60,9 @@ pub fn scaled(gas: &[&Group], title: &str) -> ChartSpec {
 /// One case's left fraction against time, with the collisionless curve.
 pub fn single(g: &Group) -> ChartSpec {
     let tau = g.tau_free();
-    let span = Some(SHOWN * tau).filter(|s| s.is_finite()).unwrap_or(f64::INFINITY);
+    let span = Some(SHOWN * tau)
+        .filter(|s| s.is_finite())
+        .unwrap_or(f64::INFINITY);
     let n = g.t.iter().take_while(|&&x| x <= span).count();
     let label = "measured (mean ± standard error)".to_string();
     let mut layers = mean_with_band(&g.t[..n], &g.mean[..n], colour(0), label).to_vec();

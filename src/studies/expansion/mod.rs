@@ -15,10 +15,10 @@ use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;
 use crate::model::report::ReportSection;
 use crate::model::run_output::{RunOutput, Series};
-use crate::studies::curves::scalars;
 use crate::stats::diffusion::diffusion;
 use crate::stats::ensemble::Runs;
 use crate::stats::passage::first_passage;
+use crate::studies::curves::scalars;
 pub use measure::{Draw, Gas, draw, late, starts_left};
 
 /// The series every run records for it.

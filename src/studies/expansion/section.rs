@@ -138,7 +138,12 @@ pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
         }
     }
     md.push_str(&methods());
-    Ok(crate::studies::curves::section("Expansion of the gas", md, figures, RESULTS))
+    Ok(crate::studies::curves::section(
+        "Expansion of the gas",
+        md,
+        figures,
+        RESULTS,
+    ))
 }
 
 fn methods() -> String {
@@ -266,7 +271,11 @@ fn points_table<'a>(groups: impl Iterator<Item = &'a &'a Group<'a>>) -> String {
         // "mean ± se (z)" of a result against its theory.
         let with_z = |name: &str, theory: f64| {
             let s = g.stat(name);
-            format!("{} ({})", pm(s.mean, s.stderr), num(z(s.mean, theory, s.stderr)))
+            format!(
+                "{} ({})",
+                pm(s.mean, s.stderr),
+                num(z(s.mean, theory, s.stderr))
+            )
         };
         let runs = g.outs.len();
         rows.push_str(&table_row(&[

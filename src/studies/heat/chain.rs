@@ -38,7 +38,11 @@ fn against_theory(over: &str, alpha: f64, se: f64) -> String {
     ]
     .map(|(name, a)| {
         let z = (alpha - a) / se;
-        let word = ["differs from", "agrees with"][(z.abs() < 4.0) as usize];
+        let word = if z.abs() < 4.0 {
+            "agrees with"
+        } else {
+            "differs from"
+        };
         format!("{word} {name} (z = {z:+.1})")
     });
     format!("Over {over}, α = {} {}.", pm(alpha, se), each.join(", "))
@@ -71,7 +75,14 @@ pub fn part(points: &[(Gas, (f64, f64, bool), Runs)], figures: &mut Vec<Figure>)
     let [fit, bulk, fit_upper] = [&logs[..], &bulk_logs, upper].map(|p| PowerLaw::fit(p, 3));
     let dof = logs.len().saturating_sub(2);
     let p = chi_square_tail(fit.chi2, dof);
-    let fits = named(CAPTIONS, ["chain_fits", "chain_drifts"][(p < 0.05) as usize]);
+    let fits = named(
+        CAPTIONS,
+        if p < 0.05 {
+            "chain_drifts"
+        } else {
+            "chain_fits"
+        },
+    );
     let fit_verdict = match p.is_nan() {
         true => String::new(),
         false => fill(fits, &[("p", num(p))]),

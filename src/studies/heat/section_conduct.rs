@@ -36,7 +36,9 @@ fn mean_profile(profiles: &[Profile]) -> (Vec<Stats>, Profile) {
     let pooled = Profile {
         x: profiles[0].x.clone(),
         temperature: t_mean.iter().map(|s| s.mean).collect(),
-        density: per_slab(|p| &p.density).map(|at| at.sum::<f64>() / runs).collect(),
+        density: per_slab(|p| &p.density)
+            .map(|at| at.sum::<f64>() / runs)
+            .collect(),
         weight: per_slab(|p| &p.weight).map(|at| at.sum()).collect(),
     };
     (t_mean, pooled)
@@ -83,7 +85,11 @@ pub fn part(
             pm(ratio_0.mean, ratio_0.stderr),
             num(rs.cpu()),
         ]));
-        let (jh, jc, g) = (rs.stat("jump_hot"), rs.stat("jump_cold"), rs.stat("gradient"));
+        let (jh, jc, g) = (
+            rs.stat("jump_hot"),
+            rs.stat("jump_cold"),
+            rs.stat("gradient"),
+        );
         match above_zero(&jh) && above_zero(&jc) {
             true => resolved.push(name.clone()),
             false => unresolved.push(name.clone()),
@@ -112,12 +118,23 @@ pub fn part(
     let mut conductivity_figure = String::new();
     if !bars.is_empty() {
         // κ over Chapman-Enskog's against the packing, beside Enskog's factor.
-        let (dim, top) = (points[0].0.dimension, bars.iter().map(|b| b.0).fold(0.0, f64::max));
+        let (dim, top) = (
+            points[0].0.dimension,
+            bars.iter().map(|b| b.0).fold(0.0, f64::max),
+        );
         let enskog = sampled(0.0, top * 1.1, 50, |p| enskog_factor(dim, p));
         let mut layers = vec![dashed(enskog, colour(1), "Enskog".into())];
-        layers.extend(measured(bars, colour(0), "measured (mean ± standard error)"));
+        layers.extend(measured(
+            bars,
+            colour(0),
+            "measured (mean ± standard error)",
+        ));
         let title = "Thermal conductivity over the dilute (Chapman-Enskog) value".into();
-        let axes = (title, "packing fraction at the centre φ", "κ / κ Chapman-Enskog");
+        let axes = (
+            title,
+            "packing fraction at the centre φ",
+            "κ / κ Chapman-Enskog",
+        );
         let figure = figure("heat_conductivity.svg", axes, (false, false), layers);
         conductivity_figure = show(figures, figure, named(CAPTIONS, "conductivity"));
     }
@@ -126,7 +143,10 @@ pub fn part(
         &[
             ("pictures", pictures),
             ("rows", rows),
-            ("jumps_verdict", fill(named(CAPTIONS, verdict), &verdict_values)),
+            (
+                "jumps_verdict",
+                fill(named(CAPTIONS, verdict), &verdict_values),
+            ),
             ("jumps", jumps),
             ("conductivity_figure", conductivity_figure),
         ],
@@ -150,7 +170,11 @@ fn profile_figure(
     let mut layers = mean_with_band(&pooled.x, &t_mean, colour(0), text).to_vec();
     let ends = [gas.diameter / 2.0, length - gas.diameter / 2.0];
     let text = format!("straight line through the middle {}%", num(100.0 * width));
-    layers.push(dashed(ends.map(|x| (x, line.at(x))).to_vec(), colour(1), text));
+    layers.push(dashed(
+        ends.map(|x| (x, line.at(x))).to_vec(),
+        colour(1),
+        text,
+    ));
     let walls = match hot_high {
         true => [(length, *hot), (0.0, *cold)],
         false => [(0.0, *hot), (length, *cold)],
@@ -168,7 +192,12 @@ fn profile_figure(
     let (hot, cold) = (num(*hot), num(*cold));
     let title = format!("Steady profile between walls at kT = {hot} and {cold}, {name}");
     let axes = (title, "x [σ]", "kinetic temperature [kT]");
-    let figure = figure(&format!("heat_profile_{k}.svg"), axes, (false, false), layers);
+    let figure = figure(
+        &format!("heat_profile_{k}.svg"),
+        axes,
+        (false, false),
+        layers,
+    );
     let values = [("name", name), ("runs", rs.outs.len().to_string())];
     show(figures, figure, &fill(named(CAPTIONS, "profile"), &values))
 }

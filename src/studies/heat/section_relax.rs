@@ -69,11 +69,27 @@ pub fn part(window: f64, points: &[(Gas, f64, Runs)], figures: &mut Vec<Figure>)
             let text = "collisionless (exact for points)".into();
             layers.push(dashed(free_curve, colour(2), text));
         }
-        let title = format!("Temperature relaxing to walls at kT = {}, {name}", num(*wall));
-        let axes = (title, "time t [σ √(m/kT)]", "kinetic temperature 2K/(dN) [kT]");
-        let figure = figure(&format!("heat_relaxation_{k}.svg"), axes, (false, false), layers);
+        let title = format!(
+            "Temperature relaxing to walls at kT = {}, {name}",
+            num(*wall)
+        );
+        let axes = (
+            title,
+            "time t [σ √(m/kT)]",
+            "kinetic temperature 2K/(dN) [kT]",
+        );
+        let figure = figure(
+            &format!("heat_relaxation_{k}.svg"),
+            axes,
+            (false, false),
+            layers,
+        );
         let values = [("name", name), ("runs", rs.outs.len().to_string())];
-        pictures.push_str(&show(figures, figure, &fill(named(CAPTIONS, "relaxation"), &values)));
+        pictures.push_str(&show(
+            figures,
+            figure,
+            &fill(named(CAPTIONS, "relaxation"), &values),
+        ));
     }
     let mut ratio_figure = String::new();
     if !ratio_bars.is_empty() {

@@ -12,10 +12,10 @@ use crate::model::descriptor::Descriptor;
 use crate::model::run_output::RunOutput;
 use crate::scene::Built;
 use crate::scene::velocities::maxwell_temperature;
-use crate::studies::curves::scalars;
 use crate::stats::diffusion::diffusion;
 use crate::stats::late::late_mean;
 use crate::stats::passage::first_passage;
+use crate::studies::curves::scalars;
 use crate::theory::heat::mean_free_path;
 use crate::theory::mixing::disk_mixture_diffusion_enskog;
 

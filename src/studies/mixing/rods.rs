@@ -5,9 +5,9 @@
 use crate::model::descriptor::Descriptor;
 use crate::model::run_output::RunOutput;
 use crate::scene::Built;
-use crate::studies::curves::scalars;
 use crate::stats::late::late_mean;
 use crate::stats::passage::first_passage;
+use crate::studies::curves::scalars;
 use crate::theory::mixing::equilibrium_concentration;
 
 /// The largest over the smallest mass the descriptor lets the gas (every

@@ -18,7 +18,9 @@ pub type Point<'a> = PointRuns<'a>;
 
 /// How many runs of a point mixed within their length.
 pub fn mixed(p: &Point) -> usize {
-    (p.outs.iter()).filter(|o| o.scalar("mixed") == Some(1.0)).count()
+    (p.outs.iter())
+        .filter(|o| o.scalar("mixed") == Some(1.0))
+        .count()
 }
 
 pub fn all_mixed(p: &Point) -> bool {
@@ -28,7 +30,9 @@ pub fn all_mixed(p: &Point) -> bool {
 /// A point's name: its values of the results named, each after its
 /// symbol, and its case if it is one.
 pub fn label(p: &Point, values: &[(&str, &str)]) -> String {
-    let values = values.iter().map(|(symbol, r)| format!("{symbol} = {}", num(p.first(r))));
+    let values = values
+        .iter()
+        .map(|(symbol, r)| format!("{symbol} = {}", num(p.first(r))));
     let what = values.collect::<Vec<_>>().join(", ");
     match &p.spec.case {
         Some(c) => format!("{what} (case {c})"),
@@ -72,7 +76,12 @@ pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
     }
     markdown.push_str(METHODS);
     let results = super::RESULTS;
-    Ok(crate::studies::curves::section("Mixing time", markdown, figures, results))
+    Ok(crate::studies::curves::section(
+        "Mixing time",
+        markdown,
+        figures,
+        results,
+    ))
 }
 
 #[cfg(test)]

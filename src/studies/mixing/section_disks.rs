@@ -168,29 +168,50 @@ fn bulk_table(bulk_points: &[&Point]) -> String {
 fn sides(p: &Point, index: usize, tau_d: f64, figures: &mut Vec<Figure>) -> Option<String> {
     let scene = p.scene()?;
     let (a, b) = (&scene.species.first()?.name, &scene.species.get(1)?.name);
-    let curves = [(a, "left"), (a, "right"), (b, "left"), (b, "right")]
-        .map(|(species, side)| (species, side, p.mean_curve(&format!("count.{species}.{side}"))));
+    let curves = [(a, "left"), (a, "right"), (b, "left"), (b, "right")].map(|(species, side)| {
+        (
+            species,
+            side,
+            p.mean_curve(&format!("count.{species}.{side}")),
+        )
+    });
     if curves.iter().any(|(_, _, (_, mean))| mean.is_empty()) {
         return None;
     }
     let mut layers = Vec::new();
     for (i, (species, side, (t, mean))) in curves.iter().enumerate() {
-        layers.extend(mean_with_band(t, mean, colour(i), format!("{species}, {side}")));
+        layers.extend(mean_with_band(
+            t,
+            mean,
+            colour(i),
+            format!("{species}, {side}"),
+        ));
     }
     if tau_d.is_finite() {
         // The slowest mode's time from the 1/e time of the step's series
         // (they are proportional).
         let slowest = tau_d / step_mixing_time(1.0);
         let (times, total) = (&curves[0].2.0, curves[0].2.1[0].mean);
-        let curve = times.iter().map(|&t| (t, total * (0.5 + step_excess(t, slowest))));
+        let curve = times
+            .iter()
+            .map(|&t| (t, total * (0.5 + step_excess(t, slowest))));
         let label = Some("diffusion (A, left)".into());
         layers.push(polyline(curve.collect(), colour(6), 1, true, label));
     }
     let name = label(p, &LABEL);
     let values = [("label", name.clone()), ("runs", p.outs.len().to_string())];
     let caption = fill(sentence(SENTENCES, "sides"), &values);
-    let axes = (format!("Two species mixing, {name}"), "time t [σ √(m/kT)]", "disks in the half");
-    let figure = figure(&format!("mixing_sides_{index}.svg"), axes, (false, false), layers);
+    let axes = (
+        format!("Two species mixing, {name}"),
+        "time t [σ √(m/kT)]",
+        "disks in the half",
+    );
+    let figure = figure(
+        &format!("mixing_sides_{index}.svg"),
+        axes,
+        (false, false),
+        layers,
+    );
     Some(show(figures, figure, &caption))
 }
 
@@ -199,7 +220,10 @@ fn sides(p: &Point, index: usize, tau_d: f64, figures: &mut Vec<Figure>) -> Opti
 fn against_density(mixing: &[&Point], all: &[Point], figures: &mut Vec<Figure>) -> String {
     let eta = |p: &Point| p.first("packing_fraction");
     let mut layers = Vec::new();
-    for (i, &r) in distinct(mixing.iter().copied(), "mass_ratio").iter().enumerate() {
+    for (i, &r) in distinct(mixing.iter().copied(), "mass_ratio")
+        .iter()
+        .enumerate()
+    {
         let mut at: Vec<&Point> = (mixing.iter().copied())
             .filter(|p| p.first("mass_ratio") == r && all_mixed(p))
             .collect();
@@ -216,6 +240,11 @@ fn against_density(mixing: &[&Point], all: &[Point], figures: &mut Vec<Figure>) 
         "packing fraction η",
         "mixing time [σ √(m/kT)]",
     );
-    let figure = figure("mixing_time_against_density.svg", labels, (false, true), layers);
+    let figure = figure(
+        "mixing_time_against_density.svg",
+        labels,
+        (false, true),
+        layers,
+    );
     show(figures, figure, sentence(SENTENCES, "density"))
 }

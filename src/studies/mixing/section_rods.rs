@@ -40,7 +40,10 @@ fn fit(points: &[&Point], x: impl Fn(&Point) -> f64) -> (PowerLaw, String) {
         .collect();
     let f = PowerLaw::fit(&logs, 2);
     let (b, chi2) = (pm(f.exponent, f.error), num(f.chi2_per_dof()));
-    (f, format!("{b} over {} fully mixed points (χ²/dof = {chi2})", f.points))
+    (
+        f,
+        format!("{b} over {} fully mixed points (χ²/dof = {chi2})", f.points),
+    )
 }
 
 pub fn part(points: &[Point], figures: &mut Vec<Figure>) -> String {
@@ -73,7 +76,12 @@ pub fn part(points: &[Point], figures: &mut Vec<Figure>) -> String {
     }
     let censored = match censored.is_empty() {
         true => String::new(),
-        false => fill(sentence(SENTENCES, "censored"), &[("at", censored.join("; "))]) + "\n\n",
+        false => {
+            fill(
+                sentence(SENTENCES, "censored"),
+                &[("at", censored.join("; "))],
+            ) + "\n\n"
+        }
     };
     let (fits, mut shown) = scaling(points, figures);
     shown.push_str(&curves(points, figures));
@@ -102,7 +110,13 @@ fn widest(points: &[Point]) -> String {
         return String::new();
     }
     let times: Vec<String> = (at.iter())
-        .map(|p| format!("{} at N = {}", stat_pm(p, "mixing_collisions"), num(p.first("particles"))))
+        .map(|p| {
+            format!(
+                "{} at N = {}",
+                stat_pm(p, "mixing_collisions"),
+                num(p.first("particles"))
+            )
+        })
         .collect();
     // A run's length on the same clock: collisions per rod.
     let length = |p: &Point| {
@@ -136,7 +150,10 @@ fn scaling(points: &[Point], figures: &mut Vec<Figure>) -> (String, String) {
     let sweep: Vec<&Point> = points.iter().filter(|p| p.spec.case.is_none()).collect();
     let spread = |p: &Point| p.first("mass_spread");
     let (mut layers, mut text) = (Vec::new(), String::new());
-    for (i, &n) in distinct(sweep.iter().copied(), "particles").iter().enumerate() {
+    for (i, &n) in distinct(sweep.iter().copied(), "particles")
+        .iter()
+        .enumerate()
+    {
         let at: Vec<&Point> = (sweep.iter().copied())
             .filter(|p| p.first("particles") == n && spread(p) > 0.0)
             .collect();
@@ -160,7 +177,10 @@ fn scaling(points: &[Point], figures: &mut Vec<Figure>) -> (String, String) {
         layers.extend(measured(mixed, colour(i), &format!("N = {n}")));
         if f.exponent.is_finite() {
             let xs = small.iter().map(|p| spread(p));
-            let ends = [xs.clone().fold(f64::INFINITY, f64::min), xs.fold(0.0, f64::max)];
+            let ends = [
+                xs.clone().fold(f64::INFINITY, f64::min),
+                xs.fold(0.0, f64::max),
+            ];
             let line = ends.map(|e| (e, f.at(e))).to_vec();
             layers.push(polyline(line, colour(i), 1, true, None));
         }
@@ -180,7 +200,12 @@ fn scaling(points: &[Point], figures: &mut Vec<Figure>) -> (String, String) {
         "mass spread ε (masses uniform in [1, 1 + ε])",
         "mixing time [collisions per rod]",
     );
-    let figure = figure("mixing_time_against_spread.svg", labels, (true, true), layers);
+    let figure = figure(
+        "mixing_time_against_spread.svg",
+        labels,
+        (true, true),
+        layers,
+    );
     let small = [("small", SMALL_SPREAD.to_string())];
     let caption = fill(sentence(SENTENCES, "spread"), &small);
     (text, show(figures, figure, &caption))
@@ -203,9 +228,18 @@ fn curves(points: &[Point], figures: &mut Vec<Figure>) -> String {
     }
     let (t, _) = first.mean_curve("energy_concentration");
     let eq = equilibrium_concentration(largest as usize);
-    let ends = [t.first().copied().unwrap_or(0.0), t.last().copied().unwrap_or(1.0)];
+    let ends = [
+        t.first().copied().unwrap_or(0.0),
+        t.last().copied().unwrap_or(1.0),
+    ];
     let label = Some("equilibrium 3/(N + 2)".into());
-    layers.push(polyline(ends.map(|t| (t, eq)).to_vec(), colour(6), 1, true, label));
+    layers.push(polyline(
+        ends.map(|t| (t, eq)).to_vec(),
+        colour(6),
+        1,
+        true,
+        label,
+    ));
     let n = num(largest);
     let labels = (
         format!("Energy concentration after a hot start, N = {n}"),

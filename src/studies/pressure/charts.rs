@@ -18,7 +18,9 @@ pub const NAMES: [&str; 3] = [
 
 /// The bulk points of dimension `d`: periodic boxes, and rods.
 pub fn bulk(all: &[Point], d: usize) -> Vec<&Point> {
-    all.iter().filter(|p| p.dimension == d && p.bulk()).collect()
+    all.iter()
+        .filter(|p| p.dimension == d && p.bulk())
+        .collect()
 }
 
 pub fn z_chart(all: &[Point]) -> Figure {
@@ -43,7 +45,11 @@ pub fn z_chart(all: &[Point]) -> Figure {
             (p.z.mean, p.error().0)
         }));
     }
-    let labels = ("Equation of state: Z = βP/ρ".into(), "packing fraction η", "Z = βP/ρ");
+    let labels = (
+        "Equation of state: Z = βP/ρ".into(),
+        "packing fraction η",
+        "Z = βP/ρ",
+    );
     figure("pressure_z.svg", labels, (false, true), layers)
 }
 
@@ -67,7 +73,12 @@ pub fn deviation_chart(all: &[Point]) -> Option<Figure> {
             let over = |eta| (e.z)(eta) / (reference.z)(eta) - 1.0;
             let end = reach(pts.iter().copied()).min(e.holds_below + 0.05);
             let label = Some(format!("{}D: {}", d, e.name));
-            layers.push(thin(sampled(0.0, end, 200, over), paint.faded(0.6), true, label));
+            layers.push(thin(
+                sampled(0.0, end, 200, over),
+                paint.faded(0.6),
+                true,
+                label,
+            ));
         }
         layers.extend(at_eta(&pts, paint, NAMES[d - 1], |p| {
             let r = (reference.z)(p.eta);

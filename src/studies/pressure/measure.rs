@@ -71,7 +71,13 @@ pub fn measure<const D: usize>(
     let mut virial_z = z_virial_scalar.unwrap_or(f64::NAN);
     // From the series, NaN without one: the cut, block error, block length,
     // doubling ratio and drift.
-    let [mut cut_time, mut block, mut length, mut doubling, mut drifted] = [f64::NAN; 5];
+    let [
+        mut cut_time,
+        mut block,
+        mut length,
+        mut doubling,
+        mut drifted,
+    ] = [f64::NAN; 5];
     // Equal rods between walls: the mass of each, else None.
     let rod_mass = (D == 1 && ctx.wall_area > 0.0 && !movable.is_empty())
         .then(|| movable[0].inv_mass)
@@ -107,7 +113,9 @@ pub fn measure<const D: usize>(
         }
         _ => block,
     };
-    Ok([z, wall_z, virial_z, eta, rho, cut_time, block, length, doubling, own, drifted])
+    Ok([
+        z, wall_z, virial_z, eta, rho, cut_time, block, length, doubling, own, drifted,
+    ])
 }
 
 /// The standard error of Z of equal rods of mass `mass` between walls, a

@@ -1,8 +1,8 @@
 //! The sweep points as the report sees them: what each point's replicas
 //! measured, pooled, and how the point was started and equilibrated.
 
-use super::packing;
 use super::equations;
+use super::packing;
 use crate::model::scene::Placement;
 use crate::stats::ensemble::Runs;
 use crate::stats::point_runs::{PointRuns, by_point};
@@ -91,7 +91,8 @@ impl Point {
 pub fn points(runs: &Runs) -> Vec<Point> {
     let mut all = by_point(runs);
     for p in &mut all {
-        p.outs.retain(|o| o.scalar("Z").is_some_and(|z| !z.is_nan()));
+        p.outs
+            .retain(|o| o.scalar("Z").is_some_and(|z| !z.is_nan()));
     }
     (all.iter())
         .filter(|p| p.spec.case.is_none() && !p.outs.is_empty())

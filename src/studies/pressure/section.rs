@@ -109,8 +109,12 @@ fn time_examples(all: &[Point]) -> Vec<(&Point, &str)> {
     let picks = [
         pick("rods, walls", |p| p.dimension == 1),
         pick("disks, walls", |p| p.dimension == 2 && p.walls),
-        pick("disks, virial", |p| p.dimension == 2 && !p.walls && p.particles < 1000),
-        pick("spheres, virial", |p| p.dimension == 3 && phases::is_fluid(3, p.eta)),
+        pick("disks, virial", |p| {
+            p.dimension == 2 && !p.walls && p.particles < 1000
+        }),
+        pick("spheres, virial", |p| {
+            p.dimension == 3 && phases::is_fluid(3, p.eta)
+        }),
     ];
     picks.into_iter().flatten().collect()
 }
@@ -141,7 +145,10 @@ fn headline(all: &[Point]) -> String {
         ("points", fluid.len().to_string()),
         ("lo", lo),
         ("hi", hi),
-        ("reach", rel.iter().filter(|r| **r <= 1.05e-4).count().to_string()),
+        (
+            "reach",
+            rel.iter().filter(|r| **r <= 1.05e-4).count().to_string(),
+        ),
         ("cpu", num(fluid.iter().map(|p| p.cpu_seconds).sum())),
         ("total", num(all.iter().map(|p| p.cpu_seconds).sum())),
     ];
@@ -163,7 +170,10 @@ fn table(d: usize, pts: &[&Point]) -> String {
     for p in pts {
         let (err, from) = p.error();
         let start = match p.start {
-            "compressed" => format!("compressed ({} coll./particle)", num(p.prepare_per_particle)),
+            "compressed" => format!(
+                "compressed ({} coll./particle)",
+                num(p.prepare_per_particle)
+            ),
             other => other.to_string(),
         };
         let mut cells = vec![
@@ -277,7 +287,12 @@ fn finite_size_table(fits: &[Fit]) -> String {
         let eqs: Vec<String> = (equations::of(f.dimension).iter())
             .map(|e| {
                 let t = (e.z)(f.eta);
-                format!("{} {} ({:+.1})", e.name, num(t), (f.z_inf - t) / f.z_inf_err)
+                format!(
+                    "{} {} ({:+.1})",
+                    e.name,
+                    num(t),
+                    (f.z_inf - t) / f.z_inf_err
+                )
             })
             .collect();
         let mut chi2 = match f.dof {
@@ -285,7 +300,11 @@ fn finite_size_table(fits: &[Fit]) -> String {
             dof => format!("{} ({dof})", num(f.chi2)),
         };
         for &(n, c, dof) in &f.left_out {
-            let values = [("n", n.to_string()), ("chi2", num(c)), ("dof", dof.to_string())];
+            let values = [
+                ("n", n.to_string()),
+                ("chi2", num(c)),
+                ("dof", dof.to_string()),
+            ];
             chi2 += &sentence("left_out", &values);
         }
         md.push_str(&table_row(&[
@@ -351,7 +370,11 @@ fn loop_text(pts: &[&Point]) -> String {
                 ("points", pts.len().to_string()),
                 ("drift", num(drift)),
             ]);
-            let resolved = if drop / err >= RESOLVED { "resolved" } else { "noise" };
+            let resolved = if drop / err >= RESOLVED {
+                "resolved"
+            } else {
+                "noise"
+            };
             let steady = match drift {
                 d if d > DRIFT => "loop_drifts",
                 d if d > 0.0 => "loop_steady",
@@ -388,8 +411,25 @@ mod tests {
             assert!(unfilled(text).is_empty());
         }
         let keys = [
-            "points", "lo", "hi", "reach", "cpu", "total", "equations", "phase", "beyond",
-            "drift", "n", "stderr", "from", "to", "drop", "sigmas", "flag", "chi2", "dof",
+            "points",
+            "lo",
+            "hi",
+            "reach",
+            "cpu",
+            "total",
+            "equations",
+            "phase",
+            "beyond",
+            "drift",
+            "n",
+            "stderr",
+            "from",
+            "to",
+            "drop",
+            "sigmas",
+            "flag",
+            "chi2",
+            "dof",
         ];
         let values = keys.map(|k| (k, "x".to_string()));
         for name in names(super::SENTENCES) {
