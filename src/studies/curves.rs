@@ -1,9 +1,7 @@
 //! Chart layers and figures the studies share.
 
 use crate::model::chart::{ChartSpec, Layer, Paint};
-use crate::model::report::{Figure, ReportSection};
-use crate::stats::format::pm;
-use crate::stats::point_runs::PointRuns;
+use crate::model::report::Figure;
 use crate::stats::summary::Stats;
 
 /// A curve of means over replicas against `t`: its band of ± one standard
@@ -114,31 +112,4 @@ pub fn show(figures: &mut Vec<Figure>, figure: Figure, caption: &str) -> String 
     let text = format!("![{caption}]({})\n\n", figure.file);
     figures.push(figure);
     text
-}
-
-/// "mean ± standard error" of a result over a point's runs.
-pub fn stat_pm(p: &PointRuns, name: &str) -> String {
-    let s = p.stat(name);
-    pm(s.mean, s.stderr)
-}
-
-/// Named results as a run's output holds them.
-pub fn scalars<const N: usize>(values: [(&str, f64); N]) -> [(String, f64); N] {
-    values.map(|(k, v)| (k.to_string(), v))
-}
-
-/// A study's section of the report, presenting every one of its `results`.
-pub fn section(
-    title: &str,
-    markdown: String,
-    figures: Vec<Figure>,
-    results: &[&str],
-) -> ReportSection {
-    let presents = results.iter().map(|r| r.to_string()).collect();
-    ReportSection {
-        title: title.into(),
-        markdown,
-        figures,
-        presents,
-    }
 }

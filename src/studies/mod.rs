@@ -5,6 +5,7 @@
 
 pub mod curves;
 pub mod options;
+pub mod parts;
 
 use crate::model::descriptor::Descriptor;
 use crate::model::need::Need;

@@ -18,7 +18,7 @@ use crate::model::run_output::{RunOutput, Series};
 use crate::stats::diffusion::diffusion;
 use crate::stats::ensemble::Runs;
 use crate::stats::passage::first_passage;
-use crate::studies::curves::scalars;
+use crate::studies::parts::scalars;
 pub use measure::{Draw, Gas, draw, late, starts_left};
 
 /// The series every run records for it.

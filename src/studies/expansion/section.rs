@@ -138,7 +138,7 @@ pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
         }
     }
     md.push_str(&methods());
-    Ok(crate::studies::curves::section(
+    Ok(crate::studies::parts::section(
         "Expansion of the gas",
         md,
         figures,

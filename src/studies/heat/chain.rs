@@ -13,7 +13,7 @@ use crate::stats::goodness::chi_square_tail;
 use crate::stats::named::named;
 use crate::stats::power_law::{PowerLaw, log_point};
 use crate::stats::table::table_row;
-use crate::studies::curves::stat_pm;
+use crate::studies::parts::stat_pm;
 
 const TEXT: &str = include_str!("chain.md");
 

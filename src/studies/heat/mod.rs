@@ -23,7 +23,7 @@ use crate::model::run_output::RunOutput;
 use crate::model::scene::SceneSpec;
 use crate::stats::ensemble::Runs;
 use crate::stats::late::late_mean;
-use crate::studies::curves::scalars;
+use crate::studies::parts::scalars;
 use crate::theory::heat::{conductivity_dilute, enskog_factor};
 pub use conduct::{Line, Profile, centre_density};
 pub use gas::{Experiment, Gas};

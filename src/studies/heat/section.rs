@@ -79,7 +79,7 @@ pub fn section(d: &Descriptor, runs: &AllRuns) -> anyhow::Result<ReportSection> 
     }
     md.push_str(METHODS);
     let title = "Heat transfer across the boundary";
-    Ok(crate::studies::curves::section(title, md, figures, RESULTS))
+    Ok(crate::studies::parts::section(title, md, figures, RESULTS))
 }
 
 #[cfg(test)]

@@ -12,7 +12,8 @@ use crate::stats::format::{count, num, pm};
 use crate::stats::named::named;
 use crate::stats::summary::{Stats, z_score};
 use crate::stats::table::table_row;
-use crate::studies::curves::{markers, mean_with_band, polyline, sampled, show, stat_pm};
+use crate::studies::curves::{markers, mean_with_band, polyline, sampled, show};
+use crate::studies::parts::stat_pm;
 use crate::theory::heat::enskog_factor;
 
 const TEXT: &str = include_str!("conduct.md");

@@ -12,7 +12,8 @@ use crate::stats::format::{count, num};
 use crate::stats::named::named;
 use crate::stats::summary::Stats;
 use crate::stats::table::table_row;
-use crate::studies::curves::{mean_with_band, show, stat_pm};
+use crate::studies::curves::{mean_with_band, show};
+use crate::studies::parts::stat_pm;
 
 const TEXT: &str = include_str!("relax.md");
 

@@ -15,7 +15,7 @@ use crate::scene::velocities::maxwell_temperature;
 use crate::stats::diffusion::diffusion;
 use crate::stats::late::late_mean;
 use crate::stats::passage::first_passage;
-use crate::studies::curves::scalars;
+use crate::studies::parts::scalars;
 use crate::theory::heat::mean_free_path;
 use crate::theory::mixing::disk_mixture_diffusion_enskog;
 

@@ -7,7 +7,7 @@ use crate::model::run_output::RunOutput;
 use crate::scene::Built;
 use crate::stats::late::late_mean;
 use crate::stats::passage::first_passage;
-use crate::studies::curves::scalars;
+use crate::studies::parts::scalars;
 use crate::theory::mixing::equilibrium_concentration;
 
 /// The largest over the smallest mass the descriptor lets the gas (every

@@ -76,7 +76,7 @@ pub fn section(runs: &Runs) -> anyhow::Result<ReportSection> {
     }
     markdown.push_str(METHODS);
     let results = super::RESULTS;
-    Ok(crate::studies::curves::section(
+    Ok(crate::studies::parts::section(
         "Mixing time",
         markdown,
         figures,

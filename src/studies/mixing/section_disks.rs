@@ -11,7 +11,8 @@ use crate::stats::format::{count, num, pm};
 use crate::stats::named::named as sentence;
 use crate::stats::summary::z_score;
 use crate::stats::table::table_row;
-use crate::studies::curves::{bar, figure, mean_with_band, measured, polyline, show, stat_pm};
+use crate::studies::curves::{bar, figure, mean_with_band, measured, polyline, show};
+use crate::studies::parts::stat_pm;
 use crate::theory::mixing::{slowest_mode_time, step_excess, step_mixing_time};
 
 const TEXT: &str = include_str!("disks.md");

@@ -10,7 +10,8 @@ use crate::stats::format::{count, num, pm};
 use crate::stats::named::named as sentence;
 use crate::stats::power_law::{PowerLaw, log_point};
 use crate::stats::table::table_row;
-use crate::studies::curves::{bar, figure, mean_with_band, measured, polyline, show, stat_pm};
+use crate::studies::curves::{bar, figure, mean_with_band, measured, polyline, show};
+use crate::studies::parts::stat_pm;
 use crate::theory::mixing::equilibrium_concentration;
 
 const TEXT: &str = include_str!("rods.md");
